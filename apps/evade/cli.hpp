@@ -1,0 +1,55 @@
+// The evade CLI's command registry and the options every command shares.
+//
+// A command lives in apps/evade/cmd_<name>.cpp and registers itself at static-init time:
+//
+//   static const bool kRegistered = evade::cli::register_command(
+//       {"plan", "observability"}, "Observability-minimizing burn (paper 004)",
+//       [](CLI::App& app) {
+//         auto opts = std::make_shared<MyOptions>();
+//         evade::cli::add_common_options(app, opts->common);
+//         app.add_option("--seed", opts->seed, "...");
+//         return [opts]() { return run_my_command(*opts); };   // returns the exit code
+//       });
+//
+// Exit codes: 0 success; 1 runtime failure; 2 bad input (config::ConfigError or
+// std::invalid_argument thrown by the command, or a CLI11 parse error) — the message names
+// the key, the value and what is allowed.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "evade/config/scenario.hpp"
+
+namespace evade::cli {
+
+/// --scenario, --set, --json: shared by every command that reads a scenario.
+struct CommonOptions {
+  std::string scenario;            ///< shipped name or path
+  std::vector<std::string> sets;   ///< key.path=value overrides, applied in order
+  bool json = false;               ///< machine-readable result on stdout
+};
+
+using Runner = std::function<int()>;
+using Setup = std::function<Runner(CLI::App&)>;
+
+/// Registers a command at `path` (e.g. {"sim"} or {"plan", "threat-area"}). Returns true so
+/// it can initialize a static.
+bool register_command(const std::vector<std::string>& path, const std::string& description,
+                      Setup setup);
+
+/// Adds --scenario (required unless default_scenario is given), --set and --json.
+void add_common_options(CLI::App& app, CommonOptions& opts,
+                        const std::string& default_scenario = "");
+
+/// Loads the scenario named by --scenario and applies every --set, in order.
+config::Scenario load_scenario(const CommonOptions& opts);
+
+/// Prints a JSON document on stdout (pretty, 2-space indent) followed by a newline.
+void print_json(const nlohmann::json& j);
+
+}  // namespace evade::cli

@@ -1,0 +1,45 @@
+# evade_add_module(NAME <m> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...] [NO_INSTALL])
+# Creates library target evade_<m> with alias evade::<m>, warnings-as-errors, sanitizer flags,
+# public include dir include/, and (unless NO_INSTALL) adds it to the evadeTargets export.
+function(evade_set_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Werror)
+endfunction()
+
+if(EVADE_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+function(evade_add_module)
+  cmake_parse_arguments(M "NO_INSTALL" "NAME" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  set(t evade_${M_NAME})
+  add_library(${t} ${M_SOURCES})
+  add_library(evade::${M_NAME} ALIAS ${t})
+  set_target_properties(${t} PROPERTIES EXPORT_NAME ${M_NAME} OUTPUT_NAME evade_${M_NAME}
+                                        POSITION_INDEPENDENT_CODE ON)
+  target_include_directories(${t} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_compile_features(${t} PUBLIC cxx_std_17)
+  target_link_libraries(${t} PUBLIC ${M_PUBLIC_DEPS} PRIVATE ${M_PRIVATE_DEPS})
+  evade_set_warnings(${t})
+  if(NOT M_NO_INSTALL)
+    install(TARGETS ${t} EXPORT evadeTargets
+            ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+            LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  endif()
+endfunction()
+
+# evade_add_test(<name> SOURCES ... LIBS ... [LABELS ...] [TIMEOUT s])
+# One gtest executable per test file group, registered with gtest_discover_tests.
+function(evade_add_test name)
+  cmake_parse_arguments(T "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  add_executable(${name} ${T_SOURCES})
+  target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
+  evade_set_warnings(${name})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 600)
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+    PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}")
+endfunction()

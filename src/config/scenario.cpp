@@ -1,0 +1,392 @@
+// Scenario YAML reading with typed, range-checked accessors (see the header).
+#include "evade/config/scenario.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+#include <yaml-cpp/yaml.h>
+
+namespace evade::config {
+namespace {
+
+using nlohmann::json;
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string cur;
+  for (char c : key) {
+    if (c == '.') {
+      parts.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  parts.push_back(cur);
+  return parts;
+}
+
+bool is_index(const std::string& s) {
+  return !s.empty() && s.size() < 9 && std::all_of(s.begin(), s.end(), [](char c) {
+    return c >= '0' && c <= '9';
+  });
+}
+
+// YAML -> JSON, keeping every scalar as text so the typed getters do the only parsing.
+json to_json(const YAML::Node& n, const std::string& where) {
+  switch (n.Type()) {
+    case YAML::NodeType::Null:
+      return json();
+    case YAML::NodeType::Scalar:
+      return json(n.Scalar());
+    case YAML::NodeType::Sequence: {
+      json a = json::array();
+      for (std::size_t i = 0; i < n.size(); ++i) a.push_back(to_json(n[i], where));
+      return a;
+    }
+    case YAML::NodeType::Map: {
+      json o = json::object();
+      for (const auto& kv : n) {
+        const std::string k = kv.first.as<std::string>();
+        if (o.contains(k)) throw ConfigError(where + ": duplicate key '" + k + "'");
+        o[k] = to_json(kv.second, where);
+      }
+      return o;
+    }
+    default:
+      return json();
+  }
+}
+
+bool file_exists(const std::string& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string out;
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? sep : "") + v[i];
+  return out;
+}
+
+void collect_leaves(const json& n, const std::string& prefix, std::vector<std::string>& out) {
+  if (n.is_object()) {
+    for (auto it = n.begin(); it != n.end(); ++it)
+      collect_leaves(it.value(), prefix.empty() ? it.key() : prefix + "." + it.key(), out);
+  } else if (n.is_array() && std::any_of(n.begin(), n.end(), [](const json& e) {
+               return e.is_object() || e.is_array();
+             })) {
+    for (std::size_t i = 0; i < n.size(); ++i)
+      collect_leaves(n[i], prefix + "." + std::to_string(i), out);
+  } else {
+    out.push_back(prefix);
+  }
+}
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+std::vector<std::string> scenario_search_dirs() {
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("EVADE_SCENARIO_DIR"); env && *env) dirs.emplace_back(env);
+#ifdef EVADE_SOURCE_SCENARIO_DIR
+  dirs.emplace_back(EVADE_SOURCE_SCENARIO_DIR);
+#endif
+#ifdef EVADE_INSTALL_SCENARIO_DIR
+  dirs.emplace_back(EVADE_INSTALL_SCENARIO_DIR);
+#endif
+  return dirs;
+}
+
+Scenario::Scenario(json tree, std::string source) : tree_(std::move(tree)), source_(std::move(source)) {
+  if (tree_.is_null()) tree_ = json::object();
+  if (!tree_.is_object()) throw ConfigError(source_ + ": the top level must be a mapping of keys");
+}
+
+Scenario Scenario::empty(const std::string& source_name) { return Scenario(json::object(), source_name); }
+
+Scenario Scenario::from_yaml_string(const std::string& yaml, const std::string& source_name) {
+  try {
+    return Scenario(to_json(YAML::Load(yaml), source_name), source_name);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(source_name + ": YAML syntax error: " + e.what());
+  }
+}
+
+Scenario Scenario::load(const std::string& name_or_path) {
+  std::string path;
+  const bool is_path = name_or_path.find('/') != std::string::npos ||
+                       (name_or_path.size() > 5 && (name_or_path.rfind(".yaml") == name_or_path.size() - 5)) ||
+                       (name_or_path.size() > 4 && (name_or_path.rfind(".yml") == name_or_path.size() - 4));
+  if (is_path) {
+    path = name_or_path;
+    if (!file_exists(path)) throw ConfigError("scenario file '" + path + "' not found");
+  } else {
+    const auto dirs = scenario_search_dirs();
+    for (const auto& d : dirs) {
+      if (file_exists(d + "/" + name_or_path + ".yaml")) {
+        path = d + "/" + name_or_path + ".yaml";
+        break;
+      }
+    }
+    if (path.empty())
+      throw ConfigError("scenario '" + name_or_path + "' not found (searched: " + join(dirs, ", ") +
+                        "); give a shipped name or a path to a .yaml file");
+  }
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  Scenario s = from_yaml_string(ss.str(), is_path ? path : name_or_path);
+  return s;
+}
+
+void Scenario::apply_override(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw ConfigError("--set '" + assignment + "': expected key.path=value");
+  const std::string key = assignment.substr(0, eq);
+  const std::string text = assignment.substr(eq + 1);
+  json value;
+  try {
+    value = to_json(YAML::Load(text), "--set " + key);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("--set " + key + ": cannot parse value '" + text + "': " + e.what());
+  }
+  if (value.is_null()) value = json(text);
+  json* cur = &tree_;
+  const auto parts = split_key(key);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string& p = parts[i];
+    if (p.empty()) throw ConfigError("--set '" + assignment + "': empty key component");
+    const bool last = i + 1 == parts.size();
+    if (cur->is_array()) {
+      if (!is_index(p) || std::stoul(p) >= cur->size())
+        throw ConfigError("--set " + key + ": '" + p + "' is not an index of a list of " +
+                          std::to_string(cur->size()));
+      cur = &(*cur)[std::stoul(p)];
+    } else {
+      if (!cur->is_object()) {
+        if (!cur->is_null()) throw ConfigError("--set " + key + ": '" + p + "' is below a value, not a mapping");
+        *cur = json::object();
+      }
+      cur = &(*cur)[p];
+    }
+    if (last) *cur = value;
+  }
+}
+
+const nlohmann::json* Scenario::find(const std::string& key) const {
+  const json* cur = &tree_;
+  for (const auto& p : split_key(key)) {
+    if (cur->is_object()) {
+      auto it = cur->find(p);
+      if (it == cur->end()) return nullptr;
+      cur = &*it;
+    } else if (cur->is_array() && is_index(p)) {
+      const auto idx = std::stoul(p);
+      if (idx >= cur->size()) return nullptr;
+      cur = &(*cur)[idx];
+    } else {
+      return nullptr;
+    }
+  }
+  return cur->is_null() ? nullptr : cur;
+}
+
+void Scenario::fail(const std::string& key, const std::string& value, const std::string& allowed) const {
+  throw ConfigError(source_ + ": key '" + key + "' = '" + value + "' is invalid: expected " + allowed);
+}
+
+std::string Scenario::scalar_text(const std::string& key, const json& node) const {
+  if (!node.is_string()) fail(key, node.dump(), "a single value, not a list or mapping");
+  return node.get<std::string>();
+}
+
+void Scenario::record(const std::string& key, const json& value) const {
+  mark_used(key);
+  json* cur = &used_;
+  const auto parts = split_key(key);
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) cur = &(*cur)[parts[i]];
+  (*cur)[parts.back()] = value;
+}
+
+void Scenario::mark_used(const std::string& key) const {
+  if (std::find(used_keys_.begin(), used_keys_.end(), key) == used_keys_.end())
+    used_keys_.push_back(key);
+}
+
+bool Scenario::has(const std::string& key) const { return find(key) != nullptr; }
+
+std::size_t Scenario::list_size(const std::string& key) const {
+  const json* n = find(key);
+  if (!n) return 0;
+  if (!n->is_array()) fail(key, n->dump(), "a list");
+  return n->size();
+}
+
+namespace {
+bool parse_double_strict(const std::string& s, double& out) {
+  if (s.empty()) return false;
+  char* end = nullptr;
+  out = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size();
+}
+}  // namespace
+
+double Scenario::get_double(const std::string& key, double min, double max) const {
+  const json* n = find(key);
+  if (!n) fail(key, "<missing>", "a number in [" + fmt(min) + ", " + fmt(max) + "] (required key)");
+  const std::string text = scalar_text(key, *n);
+  double v = 0.0;
+  if (!parse_double_strict(text, v) || !std::isfinite(v))
+    fail(key, text, "a finite number in [" + fmt(min) + ", " + fmt(max) + "]");
+  if (v < min || v > max) fail(key, text, "a number in [" + fmt(min) + ", " + fmt(max) + "]");
+  record(key, v);
+  return v;
+}
+
+double Scenario::get_double(const std::string& key, double min, double max, double fallback) const {
+  if (!has(key)) {
+    record(key, fallback);
+    return fallback;
+  }
+  return get_double(key, min, max);
+}
+
+long Scenario::get_int(const std::string& key, long min, long max) const {
+  const json* n = find(key);
+  const std::string range = "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  if (!n) fail(key, "<missing>", range + " (required key)");
+  const std::string text = scalar_text(key, *n);
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) fail(key, text, range);
+  if (v < min || v > max) fail(key, text, range);
+  record(key, v);
+  return v;
+}
+
+long Scenario::get_int(const std::string& key, long min, long max, long fallback) const {
+  if (!has(key)) {
+    record(key, fallback);
+    return fallback;
+  }
+  return get_int(key, min, max);
+}
+
+bool Scenario::get_bool(const std::string& key) const {
+  const json* n = find(key);
+  if (!n) fail(key, "<missing>", "true or false (required key)");
+  const std::string text = scalar_text(key, *n);
+  if (text != "true" && text != "false") fail(key, text, "true or false");
+  record(key, text == "true");
+  return text == "true";
+}
+
+bool Scenario::get_bool(const std::string& key, bool fallback) const {
+  if (!has(key)) {
+    record(key, fallback);
+    return fallback;
+  }
+  return get_bool(key);
+}
+
+std::string Scenario::get_string(const std::string& key) const {
+  const json* n = find(key);
+  if (!n) fail(key, "<missing>", "a string (required key)");
+  const std::string text = scalar_text(key, *n);
+  record(key, text);
+  return text;
+}
+
+std::string Scenario::get_string(const std::string& key, const std::string& fallback) const {
+  if (!has(key)) {
+    record(key, fallback);
+    return fallback;
+  }
+  return get_string(key);
+}
+
+std::string Scenario::get_enum(const std::string& key, const std::vector<std::string>& allowed) const {
+  const json* n = find(key);
+  if (!n) fail(key, "<missing>", "one of {" + join(allowed, ", ") + "} (required key)");
+  const std::string text = scalar_text(key, *n);
+  if (std::find(allowed.begin(), allowed.end(), text) == allowed.end())
+    fail(key, text, "one of {" + join(allowed, ", ") + "}");
+  record(key, text);
+  return text;
+}
+
+std::string Scenario::get_enum(const std::string& key, const std::vector<std::string>& allowed,
+                               const std::string& fallback) const {
+  if (!has(key)) {
+    record(key, fallback);
+    return fallback;
+  }
+  return get_enum(key, allowed);
+}
+
+std::vector<double> Scenario::get_double_list(const std::string& key, double min, double max,
+                                              std::size_t min_len) const {
+  const json* n = find(key);
+  const std::string what = "a list of at least " + std::to_string(min_len) +
+                           " finite numbers in [" + fmt(min) + ", " + fmt(max) + "]";
+  if (!n) fail(key, "<missing>", what + " (required key)");
+  if (!n->is_array() || n->size() < min_len) fail(key, n->dump(), what);
+  std::vector<double> out;
+  for (std::size_t i = 0; i < n->size(); ++i) {
+    const json& e = (*n)[i];
+    double v = 0.0;
+    if (!e.is_string() || !parse_double_strict(e.get<std::string>(), v) || !std::isfinite(v) ||
+        v < min || v > max)
+      fail(key + "." + std::to_string(i), e.is_string() ? e.get<std::string>() : e.dump(), what);
+    out.push_back(v);
+  }
+  record(key, out);
+  return out;
+}
+
+Vec3 Scenario::get_vec3(const std::string& key, double min, double max) const {
+  const json* n = find(key);
+  if (n && n->is_array() && n->size() != 3)
+    fail(key, n->dump(), "a list of exactly 3 numbers in [" + fmt(min) + ", " + fmt(max) + "]");
+  const auto v = get_double_list(key, min, max, 3);
+  return Vec3(v[0], v[1], v[2]);
+}
+
+void Scenario::check_all_used() const {
+  std::vector<std::string> leaves;
+  collect_leaves(tree_, "", leaves);
+  std::vector<std::string> unknown;
+  for (const auto& leaf : leaves) {
+    if (leaf.empty()) continue;
+    // A leaf is known if it or one of its parents was read (a list read whole).
+    bool known = false;
+    for (const auto& u : used_keys_) {
+      if (leaf == u || (leaf.size() > u.size() && leaf.compare(0, u.size(), u) == 0 && leaf[u.size()] == '.')) {
+        known = true;
+        break;
+      }
+    }
+    if (!known) unknown.push_back(leaf);
+  }
+  if (unknown.empty()) return;
+  std::vector<std::string> known_keys = used_keys_;
+  std::sort(known_keys.begin(), known_keys.end());
+  throw ConfigError(source_ + ": unknown key" + (unknown.size() > 1 ? "s '" : " '") + join(unknown, "', '") +
+                    "' (allowed keys: " + join(known_keys, ", ") + ")");
+}
+
+}  // namespace evade::config
