@@ -1,0 +1,103 @@
+// Scenario reading: every bad value names its key, its value and what is allowed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "evade/config/scenario.hpp"
+
+namespace evade::config {
+namespace {
+
+const char* kDoc = R"(
+sensor:
+  noise_rad: 5.0e-5
+  rate_hz: 50
+  mode: angles-only
+target:
+  r_eci_m: [1.0, 2.0, 3.0]
+objects:
+  - {a_m: 7.0e6, size_m: 1.0}
+  - {a_m: 7.1e6, size_m: 3.0}
+)";
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "<no error>";
+}
+
+TEST(Scenario, ReadsTypedValuesWithRanges) {
+  const Scenario s = Scenario::from_yaml_string(kDoc, "doc");
+  EXPECT_DOUBLE_EQ(s.get_double("sensor.noise_rad", 0.0, 1.0), 5.0e-5);
+  EXPECT_EQ(s.get_int("sensor.rate_hz", 1, 1000), 50);
+  EXPECT_EQ(s.get_enum("sensor.mode", {"ideal", "angles-only"}), "angles-only");
+  EXPECT_EQ(s.get_vec3("target.r_eci_m", -1e9, 1e9), Vec3(1, 2, 3));
+  EXPECT_EQ(s.list_size("objects"), 2u);
+  EXPECT_DOUBLE_EQ(s.get_double("objects.1.size_m", 0.0, 100.0), 3.0);
+  EXPECT_DOUBLE_EQ(s.get_double("absent_key_s", 0.0, 10.0, 4.0), 4.0);
+}
+
+TEST(Scenario, OutOfRangeValueNamesKeyValueAndRange) {
+  const Scenario s = Scenario::from_yaml_string(kDoc, "doc");
+  const std::string msg = error_of([&] { s.get_double("sensor.noise_rad", 0.0, 1e-5); });
+  EXPECT_NE(msg.find("sensor.noise_rad"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("5.0e-5"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("[0, 1e-05]"), std::string::npos) << msg;
+}
+
+TEST(Scenario, RejectsNanInfAndNonNumbers) {
+  for (const char* bad : {"nan", ".nan", "inf", "-.inf", "1e999", "12abc", "[1,2]"}) {
+    Scenario s = Scenario::from_yaml_string(kDoc, "doc");
+    s.apply_override(std::string("sensor.noise_rad=") + bad);
+    const std::string msg = error_of([&] { s.get_double("sensor.noise_rad", 0.0, 1.0); });
+    EXPECT_NE(msg.find("sensor.noise_rad"), std::string::npos) << bad << ": " << msg;
+  }
+}
+
+TEST(Scenario, UnknownKeyIsReportedWithTheAllowedKeys) {
+  Scenario s = Scenario::from_yaml_string(kDoc, "doc");
+  s.apply_override("sensor.noise=1e-4");  // missing unit suffix
+  s.get_double("sensor.noise_rad", 0.0, 1.0);
+  s.get_int("sensor.rate_hz", 1, 1000);
+  s.get_string("sensor.mode");
+  s.get_vec3("target.r_eci_m", -1e9, 1e9);
+  for (std::size_t i = 0; i < s.list_size("objects"); ++i) {
+    s.get_double("objects." + std::to_string(i) + ".a_m", 0, 1e9);
+    s.get_double("objects." + std::to_string(i) + ".size_m", 0, 1e3);
+  }
+  const std::string msg = error_of([&] { s.check_all_used(); });
+  EXPECT_NE(msg.find("unknown key 'sensor.noise'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("sensor.noise_rad"), std::string::npos) << msg;
+}
+
+TEST(Scenario, OverridesReplaceAndAddKeysAndIndexLists) {
+  Scenario s = Scenario::from_yaml_string(kDoc, "doc");
+  s.apply_override("sensor.rate_hz=200");
+  s.apply_override("objects.0.size_m=2.5");
+  s.apply_override("new.block.value_s=3");
+  s.apply_override("target.r_eci_m=[4, 5, 6]");
+  EXPECT_EQ(s.get_int("sensor.rate_hz", 1, 1000), 200);
+  EXPECT_DOUBLE_EQ(s.get_double("objects.0.size_m", 0, 10), 2.5);
+  EXPECT_DOUBLE_EQ(s.get_double("new.block.value_s", 0, 10), 3.0);
+  EXPECT_EQ(s.get_vec3("target.r_eci_m", -10, 10), Vec3(4, 5, 6));
+  EXPECT_THROW(s.apply_override("objects.7.size_m=1"), ConfigError);
+  EXPECT_THROW(s.apply_override("no_equals_sign"), ConfigError);
+}
+
+TEST(Scenario, WrongShapesAndMissingRequiredKeysAreErrors) {
+  const Scenario s = Scenario::from_yaml_string(kDoc, "doc");
+  EXPECT_THROW(s.get_vec3("sensor.noise_rad", 0, 1), ConfigError);
+  EXPECT_THROW(s.get_double("sensor", 0, 1), ConfigError);
+  EXPECT_THROW(s.get_double("missing_m", 0, 1), ConfigError);
+  EXPECT_THROW(s.get_enum("sensor.mode", {"ideal"}), ConfigError);
+  EXPECT_THROW(s.get_int("sensor.noise_rad", 0, 10), ConfigError);
+  EXPECT_THROW(Scenario::from_yaml_string("a: [1, 2", "broken"), ConfigError);
+  EXPECT_THROW(Scenario::from_yaml_string("- 1\n- 2\n", "list"), ConfigError);
+  EXPECT_THROW(Scenario::load("no-such-scenario-name"), ConfigError);
+}
+
+}  // namespace
+}  // namespace evade::config
