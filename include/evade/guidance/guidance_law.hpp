@@ -160,7 +160,10 @@ class GuidanceLaw {
   const LosRateFilter& filter() const noexcept { return filter_; }
 
  private:
-  ThrustCommand finish(ThrustCommand cmd, std::int64_t now_us) noexcept;
+  double to_s(std::int64_t utime_us) const noexcept {
+    return 1e-6 * static_cast<double>(utime_us - time_origin_us_);
+  }
+  ThrustCommand hold(GuidanceMode mode, CommandReason reason, std::int64_t now_us) noexcept;
 
   GuidanceConfig cfg_;
   LosRateFilter filter_;
@@ -168,12 +171,17 @@ class GuidanceLaw {
   bool have_prev_step_ = false;
   std::int64_t prev_step_us_ = 0;
   double prev_accel_mps2_ = 0.0;
+  bool have_time_origin_ = false;
+  std::int64_t time_origin_us_ = 0;  // filter time 0 (keeps double time small and exact)
   bool coast_latched_ = false;
   CommandReason coast_reason_ = CommandReason::kPassedClosestApproach;
   bool evade_started_ = false;
-  Vec3 u_at_evade_start_ = Vec3::Zero();
-  double last_range_rate_mps_ = 0.0;
-  bool have_range_rate_ = false;
+  Vec3 u_at_evade_start_eci_ = Vec3::Zero();
+  bool have_range_ = false;  // from the latest measurement carrying range
+  std::int64_t range_utime_us_ = 0;
+  double range_m_ = 0.0;
+  double range_rate_mps_ = 0.0;
+  bool was_closing_ = false;
   bool have_tca_estimate_ = false;
   std::int64_t tca_estimate_us_ = 0;
 };
