@@ -1,0 +1,14 @@
+// LCM channel names used by the guidance node and the simulator link (design_node.md
+// NODE-IF-1). The node subscribes and publishes through the C API with these C strings.
+#pragma once
+
+namespace evade::guidance_lcm {
+
+inline constexpr const char* kChanAngles = "EVADE_ANGLES";        ///< evade_angles_t, in
+inline constexpr const char* kChanNav = "EVADE_NAV";              ///< evade_nav_state_t, in
+inline constexpr const char* kChanArm = "EVADE_ARM";              ///< evade_arm_t, in
+inline constexpr const char* kChanClock = "EVADE_SIM_CLOCK";      ///< evade_sim_clock_t, in
+inline constexpr const char* kChanCmd = "EVADE_THRUST_CMD";       ///< evade_thrust_cmd_t, out
+inline constexpr const char* kChanStatus = "EVADE_GUID_STATUS";   ///< evade_guidance_status_t, out
+
+}  // namespace evade::guidance_lcm

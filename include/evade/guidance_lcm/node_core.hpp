@@ -1,0 +1,144 @@
+// The guidance node's cycle, without its clock: subscribe, queue, validate, account, step
+// the law (paper 000 guidance, evade/guidance/guidance_law.hpp), publish one command and the
+// status. The timing loop (fixed rate on absolute deadlines, or lockstep on sim-clock ticks)
+// lives in apps/evade_guidance_node; tests drive this class directly over memq://.
+// Requirements: docs/parts/design_node.md (NODE-IN-*, NODE-OUT-*, NODE-WD-*, NODE-RT-*).
+//
+// Cycle shape (STYLE.md §2): drain LCM into the bounded queue (receive callback copies raw
+// bytes only) → decode + validate + seq/utime checks, newest valid message per channel is
+// the candidate (older ones superseded) → step the law → node watchdog → encode into a
+// preallocated buffer → publish command (seq +1) → status every status_divider cycles.
+// After construction nothing allocates (operator new) or throws.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <lcm/lcm.h>
+
+#include "evade/evade_angles_t.hpp"
+#include "evade/evade_arm_t.hpp"
+#include "evade/evade_guidance_status_t.hpp"
+#include "evade/evade_nav_state_t.hpp"
+#include "evade/evade_sim_clock_t.hpp"
+#include "evade/evade_thrust_cmd_t.hpp"
+#include "evade/guidance/guidance_law.hpp"
+#include "evade/guidance_lcm/cycle_stats.hpp"
+#include "evade/guidance_lcm/input_accounting.hpp"
+#include "evade/guidance_lcm/input_queue.hpp"
+#include "evade/guidance_lcm/raw_publisher.hpp"
+#include "evade/guidance_lcm/seq_tracker.hpp"
+
+namespace evade::guidance_lcm {
+
+struct NodeConfig {
+  guidance::GuidanceConfig guidance;  ///< the law's parameters (validated by the law)
+  double stale_limit_s = 0.5;         ///< edge staleness and watchdog limit (0, 60] [s]
+  double future_tolerance_s = 0.05;   ///< accept utime up to now + this [0, 10] [s]
+  int queue_capacity = 16;            ///< bounded input queue [1, 4096]
+  int max_drain_per_cycle = 1024;     ///< LCM messages handled per drain() [1, 1e6]
+  int status_divider = 1;             ///< publish status every N cycles [1, 10000]
+  bool armed = true;                  ///< initial arm state (evade_arm_t changes it)
+  bool lockstep = false;              ///< subscribe to the sim clock
+
+  /// Empty when valid, else "NodeConfig.<field> = <value> outside <range>" (also checks
+  /// guidance.validate()).
+  std::string validate() const;
+};
+
+enum InputChannel : int { kInAngles = 0, kInNav = 1, kInArm = 2, kInCount = 3 };
+
+class GuidanceNode {
+ public:
+  /// Subscribes on lcm (not owned) and preallocates everything. Throws std::invalid_argument
+  /// on a bad config, std::runtime_error if LCM refuses a subscription.
+  GuidanceNode(lcm_t* lcm, const NodeConfig& cfg);
+  ~GuidanceNode();
+  GuidanceNode(const GuidanceNode&) = delete;
+  GuidanceNode& operator=(const GuidanceNode&) = delete;
+
+  /// Handles every message LCM has ready now (non-blocking), up to max_drain_per_cycle.
+  /// Returns the number handled, or -1 if LCM reported an error (e.g. end of a log file).
+  int drain() noexcept;
+  /// Lockstep: blocks up to timeout_ms for a sim-clock tick (inputs that arrive first are
+  /// queued). Returns 1 with *tick_utime set, 0 on timeout, -1 on an LCM error.
+  int wait_for_tick(int timeout_ms, std::int64_t* tick_utime) noexcept;
+  /// One guidance cycle at now_us. Publishes exactly one command; returns it.
+  const evade_thrust_cmd_t& run_cycle(std::int64_t now_us) noexcept;
+
+  /// Timing figures from the loop (they go out in the status message).
+  void record_compute_time(double us) noexcept { compute_.add(us); }
+  void record_wakeup_latency(double us) noexcept { wakeup_.add(us); }
+  void record_overrun() noexcept { compute_.add_overrun(); }
+
+  const InputCounts& counts() const noexcept { return counts_; }
+  const CycleStats& compute_stats() const noexcept { return compute_; }
+  const CycleStats& wakeup_stats() const noexcept { return wakeup_; }
+  const guidance::GuidanceLaw& law() const noexcept { return law_; }
+  const NodeConfig& config() const noexcept { return cfg_; }
+  const evade_thrust_cmd_t& last_command() const noexcept { return cmd_msg_; }
+  const evade_guidance_status_t& last_status() const noexcept { return status_msg_; }
+  std::int64_t cycles() const noexcept { return cycles_; }
+  std::int64_t watchdog_cycles() const noexcept { return watchdog_cycles_; }
+  std::int64_t ticks_received() const noexcept { return ticks_received_; }
+  std::int64_t ticks_missed() const noexcept { return ticks_missed_; }
+  bool armed() const noexcept { return armed_; }
+
+ private:
+  struct SubContext {
+    GuidanceNode* node;
+    int channel;
+  };
+  static void on_input(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
+  static void on_clock(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
+  void process_queue(std::int64_t now_us) noexcept;
+  template <typename Msg>
+  bool admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) noexcept;
+
+  lcm_t* lcm_;
+  NodeConfig cfg_;
+  guidance::GuidanceLaw law_;
+  std::int64_t stale_us_;
+  std::int64_t future_us_;
+  InputQueue queue_;
+  std::array<SubContext, kInCount> ctx_{};
+  std::array<lcm_subscription_t*, kInCount> subs_{};
+  lcm_subscription_t* clock_sub_ = nullptr;
+  std::array<SeqTracker, kInCount> seq_{};
+  InputCounts counts_;
+  CycleStats compute_;
+  CycleStats wakeup_;
+
+  // Candidates of the current cycle (newest valid message per channel).
+  std::array<bool, kInCount> have_cand_{};
+  evade_angles_t cand_angles_{};
+  evade_nav_state_t cand_nav_{};
+  evade_arm_t cand_arm_{};
+
+  // State carried between cycles.
+  guidance::GuidanceInput input_{};
+  bool armed_ = true;
+  bool have_angles_ = false;
+  std::int64_t last_angles_utime_ = -1;
+  std::int64_t cycles_ = 0;
+  std::int64_t watchdog_cycles_ = 0;
+
+  // Lockstep tick.
+  bool tick_pending_ = false;
+  std::int64_t tick_utime_ = 0;
+  std::int64_t ticks_received_ = 0;
+  std::int64_t ticks_missed_ = 0;
+  SeqTracker tick_seq_;
+
+  // Outputs, preallocated.
+  std::int64_t cmd_seq_ = 0;
+  std::int64_t status_seq_ = 0;
+  evade_thrust_cmd_t cmd_msg_{};
+  evade_guidance_status_t status_msg_{};
+  RawPublisher<evade_thrust_cmd_t> cmd_pub_;
+  RawPublisher<evade_guidance_status_t> status_pub_;
+};
+
+}  // namespace evade::guidance_lcm

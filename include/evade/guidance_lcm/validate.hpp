@@ -1,0 +1,40 @@
+// Field validation of received LCM messages at the node's edge (design_node.md NODE-IN-2):
+// NaN survives LCM encoding and the generated decode checks only the type fingerprint and
+// the length, so every numeric field is checked here before anything reaches the law.
+#pragma once
+
+#include "evade/evade_angles_t.hpp"
+#include "evade/evade_arm_t.hpp"
+#include "evade/evade_nav_state_t.hpp"
+#include "evade/evade_sim_clock_t.hpp"
+#include "evade/evade_thrust_cmd_t.hpp"
+#include "evade/guidance_lcm/input_accounting.hpp"
+
+namespace evade::guidance_lcm {
+
+/// Allowed ranges (inclusive). Elevation per paper 000 eq. 13; azimuth in [-2pi, 2pi] as the
+/// law accepts it (it wraps internally).
+struct Limits {
+  static constexpr double kMaxElevationRad = 1.5707963267948966;  // pi/2
+  static constexpr double kMinAzimuthRad = -6.283185307179586;    // -2 pi
+  static constexpr double kMaxAzimuthRad = 6.283185307179586;     // 2 pi
+  static constexpr double kMaxSigmaAngleRad = 0.5;                // a 30 deg 1-sigma is no data
+  static constexpr double kMaxAngleRateRadps = 10.0;
+  static constexpr double kMaxRangeM = 1.0e8;
+  static constexpr double kMaxRangeRateMps = 1.0e5;
+  static constexpr double kMaxPositionM = 1.0e9;
+  static constexpr double kMaxVelocityMps = 1.0e5;
+  static constexpr double kUnitTolerance = 1e-6;                  // | |u| - 1 |
+  static constexpr double kMaxAccelMps2 = 1.0e3;
+};
+
+/// Each returns Reason::kOk or why the message must be rejected. No allocation, no throw.
+Reason validate(const evade_angles_t& m) noexcept;
+Reason validate(const evade_nav_state_t& m) noexcept;
+Reason validate(const evade_arm_t& m) noexcept;
+Reason validate(const evade_sim_clock_t& m) noexcept;
+/// A command: mode in range, accel finite and >= 0, |u| = 1 when accel > 0 (u = 0 allowed
+/// with accel = 0). Used by the simulator side of the link.
+Reason validate(const evade_thrust_cmd_t& m) noexcept;
+
+}  // namespace evade::guidance_lcm

@@ -1,0 +1,273 @@
+// Guidance node cycle (design_node.md). The law is paper 000's −e_θ evasion
+// (guidance_law.hpp); this file only moves data to and from it and guards the edge.
+#include "evade/guidance_lcm/node_core.hpp"
+
+#include <time.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "evade/guidance_lcm/channels.hpp"
+#include "evade/guidance_lcm/convert.hpp"
+#include "evade/guidance_lcm/validate.hpp"
+
+namespace evade::guidance_lcm {
+namespace {
+
+template <typename T>
+std::string range_error(const char* field, T value, const char* range) {
+  std::ostringstream os;
+  os << "NodeConfig." << field << " = " << value << " outside " << range;
+  return os.str();
+}
+
+std::int64_t monotonic_us() noexcept {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1000000 + ts.tv_nsec / 1000;
+}
+
+}  // namespace
+
+std::string NodeConfig::validate() const {
+  if (!(stale_limit_s > 0.0 && stale_limit_s <= 60.0))
+    return range_error("stale_limit_s", stale_limit_s, "(0, 60] s");
+  if (!(future_tolerance_s >= 0.0 && future_tolerance_s <= 10.0))
+    return range_error("future_tolerance_s", future_tolerance_s, "[0, 10] s");
+  if (queue_capacity < 1 || queue_capacity > 4096)
+    return range_error("queue_capacity", queue_capacity, "[1, 4096]");
+  if (max_drain_per_cycle < 1 || max_drain_per_cycle > 1000000)
+    return range_error("max_drain_per_cycle", max_drain_per_cycle, "[1, 1000000]");
+  if (status_divider < 1 || status_divider > 10000)
+    return range_error("status_divider", status_divider, "[1, 10000]");
+  return guidance.validate();
+}
+
+static const NodeConfig& checked(const NodeConfig& cfg) {
+  const std::string err = cfg.validate();
+  if (!err.empty()) throw std::invalid_argument(err);
+  return cfg;
+}
+
+GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg)
+    : lcm_(lcm),
+      cfg_(checked(cfg)),
+      law_(cfg.guidance),
+      stale_us_(static_cast<std::int64_t>(std::llround(cfg.stale_limit_s * 1e6))),
+      future_us_(static_cast<std::int64_t>(std::llround(cfg.future_tolerance_s * 1e6))),
+      queue_(static_cast<std::size_t>(cfg.queue_capacity)),
+      armed_(cfg.armed),
+      cmd_pub_(lcm, kChanCmd),
+      status_pub_(lcm, kChanStatus) {
+  if (lcm_ == nullptr) throw std::invalid_argument("GuidanceNode: lcm is null");
+  const char* names[kInCount] = {kChanAngles, kChanNav, kChanArm};
+  for (int c = 0; c < kInCount; ++c) {
+    ctx_[c] = SubContext{this, c};
+    subs_[c] = lcm_subscribe(lcm_, names[c], &GuidanceNode::on_input, &ctx_[c]);
+    if (subs_[c] == nullptr)
+      throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + names[c]);
+    // LCM's own per-subscription queue (udpm default 30) would drop bursts silently before
+    // our accounting sees them; make it large so the bounded queue we count is ours.
+    lcm_subscription_set_queue_capacity(subs_[c], 10000);
+  }
+  if (cfg_.lockstep) {
+    clock_sub_ = lcm_subscribe(lcm_, kChanClock, &GuidanceNode::on_clock, this);
+    if (clock_sub_ == nullptr)
+      throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + kChanClock);
+    lcm_subscription_set_queue_capacity(clock_sub_, 10000);
+  }
+  input_.armed = armed_;
+}
+
+GuidanceNode::~GuidanceNode() {
+  for (auto* s : subs_)
+    if (s != nullptr) lcm_unsubscribe(lcm_, s);
+  if (clock_sub_ != nullptr) lcm_unsubscribe(lcm_, clock_sub_);
+}
+
+void GuidanceNode::on_input(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
+  auto* ctx = static_cast<SubContext*>(user);
+  GuidanceNode* self = ctx->node;
+  ++self->counts_.received;
+  if (rbuf->data_size > kMaxInputBytes) {  // no input type is this large: corrupt
+    self->counts_.add(Verdict::kRejected, Reason::kOversize);
+    return;
+  }
+  if (!self->queue_.push(ctx->channel, rbuf->data, rbuf->data_size)) {
+    self->counts_.add(Verdict::kDropped);  // the oldest queued message made room
+  }
+}
+
+void GuidanceNode::on_clock(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
+  auto* self = static_cast<GuidanceNode*>(user);
+  evade_sim_clock_t tick{};
+  if (tick.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) !=
+          static_cast<int>(rbuf->data_size) ||
+      validate(tick) != Reason::kOk) {
+    return;  // not a tick; the simulator will time out and say so
+  }
+  std::int64_t gaps = 0;
+  if (self->tick_seq_.check(tick.seq, &gaps) != Reason::kOk) return;  // replayed tick
+  ++self->ticks_received_;
+  if (self->tick_pending_) ++self->ticks_missed_;  // previous tick never got its cycle
+  self->tick_pending_ = true;
+  self->tick_utime_ = tick.utime;
+}
+
+int GuidanceNode::drain() noexcept {
+  int n = 0;
+  while (n < cfg_.max_drain_per_cycle) {
+    const int rc = lcm_handle_timeout(lcm_, 0);
+    if (rc < 0) return -1;
+    if (rc == 0) break;
+    ++n;
+  }
+  return n;
+}
+
+int GuidanceNode::wait_for_tick(int timeout_ms, std::int64_t* tick_utime) noexcept {
+  const std::int64_t deadline = monotonic_us() + static_cast<std::int64_t>(timeout_ms) * 1000;
+  while (!tick_pending_) {
+    const std::int64_t left_us = deadline - monotonic_us();
+    if (left_us <= 0) return 0;
+    const int rc = lcm_handle_timeout(lcm_, static_cast<int>((left_us + 999) / 1000));
+    if (rc < 0) return -1;
+  }
+  tick_pending_ = false;
+  *tick_utime = tick_utime_;
+  return 1;
+}
+
+template <typename Msg>
+bool GuidanceNode::admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) noexcept {
+  const int n = msg->decode(raw.data.data(), 0, static_cast<int>(raw.size));
+  if (n < 0 || n != static_cast<int>(raw.size)) {  // wrong type, truncated or trailing bytes
+    counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
+    return false;
+  }
+  const Reason r = validate(*msg);
+  if (r != Reason::kOk) {
+    counts_.add(Verdict::kRejected, r);
+    return false;
+  }
+  if (msg->utime > now_us + future_us_) {
+    counts_.add(Verdict::kRejected, Reason::kFromFuture);
+    return false;
+  }
+  if (msg->utime < now_us - stale_us_) {
+    counts_.add(Verdict::kStale, Reason::kStaleUtime);
+    return false;
+  }
+  std::int64_t gaps = 0;
+  const Reason s = seq_[raw.channel].check(msg->seq, &gaps);
+  if (s != Reason::kOk) {
+    counts_.add(Verdict::kStale, s);
+    return false;
+  }
+  counts_.seq_gaps += gaps;
+  return true;
+}
+
+void GuidanceNode::process_queue(std::int64_t now_us) noexcept {
+  have_cand_.fill(false);
+  while (!queue_.empty()) {
+    const RawMessage& raw = queue_.front();
+    switch (raw.channel) {
+      case kInAngles: {
+        evade_angles_t m{};
+        if (admit(raw, now_us, &m)) {
+          if (have_cand_[kInAngles]) counts_.add(Verdict::kSuperseded);
+          cand_angles_ = m;
+          have_cand_[kInAngles] = true;
+        }
+        break;
+      }
+      case kInNav: {
+        evade_nav_state_t m{};
+        if (admit(raw, now_us, &m)) {
+          if (have_cand_[kInNav]) counts_.add(Verdict::kSuperseded);
+          cand_nav_ = m;
+          have_cand_[kInNav] = true;
+        }
+        break;
+      }
+      case kInArm: {
+        evade_arm_t m{};
+        if (admit(raw, now_us, &m)) {
+          if (have_cand_[kInArm]) counts_.add(Verdict::kSuperseded);
+          cand_arm_ = m;
+          have_cand_[kInArm] = true;
+        }
+        break;
+      }
+      default:
+        counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
+        break;
+    }
+    queue_.pop();
+  }
+  input_.has_measurement = false;
+  if (have_cand_[kInAngles]) {
+    counts_.add(Verdict::kConsumed);
+    from_lcm(cand_angles_, &input_.meas);
+    input_.has_measurement = true;
+    if (cand_angles_.valid) {
+      have_angles_ = true;
+      last_angles_utime_ = cand_angles_.utime;
+    }
+  }
+  if (have_cand_[kInNav]) {
+    counts_.add(Verdict::kConsumed);
+    from_lcm(cand_nav_, &input_.nav);
+  }
+  if (have_cand_[kInArm]) {
+    counts_.add(Verdict::kConsumed);
+    armed_ = cand_arm_.armed;
+  }
+  input_.armed = armed_;
+}
+
+const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept {
+  process_queue(now_us);
+  guidance::ThrustCommand cmd = law_.step(input_, now_us);
+  cmd.utime_us = now_us;
+  // Node watchdog (NODE-WD-1): independent of the law's own stale logic, zero thrust as
+  // soon as the newest valid measurement is older than the stale limit.
+  if (have_angles_ && now_us - last_angles_utime_ > stale_us_) {
+    cmd.mode = guidance::GuidanceMode::kSafe;
+    cmd.dir_eci.setZero();
+    cmd.accel_mps2 = 0.0;
+    cmd.reason = guidance::CommandReason::kMeasurementStale;
+    ++watchdog_cycles_;
+  }
+  to_lcm(cmd, ++cmd_seq_, have_angles_ ? last_angles_utime_ : -1, &cmd_msg_);
+  cmd_pub_.publish(cmd_msg_);
+  ++cycles_;
+
+  if (cycles_ % cfg_.status_divider == 0) {
+    to_lcm(law_.status(), &status_msg_);
+    status_msg_.mode = cmd_msg_.mode;  // after the watchdog
+    status_msg_.reason = cmd_msg_.reason;
+    status_msg_.utime = now_us;
+    status_msg_.seq = ++status_seq_;
+    status_msg_.armed = armed_;
+    status_msg_.n_received = counts_.received;
+    status_msg_.n_consumed = counts_.consumed;
+    status_msg_.n_rejected = counts_.rejected;
+    status_msg_.n_stale = counts_.stale;
+    status_msg_.n_superseded = counts_.superseded;
+    status_msg_.n_dropped = counts_.dropped;
+    status_msg_.n_seq_gaps = counts_.seq_gaps;
+    status_msg_.cycles = cycles_;
+    status_msg_.watchdog_cycles = watchdog_cycles_;
+    status_msg_.overruns = compute_.overruns();
+    status_msg_.cycle_p50_us = compute_.quantile(0.50);
+    status_msg_.cycle_p99_us = compute_.quantile(0.99);
+    status_msg_.cycle_max_us = compute_.max_us();
+    status_pub_.publish(status_msg_);
+  }
+  return cmd_msg_;
+}
+
+}  // namespace evade::guidance_lcm
