@@ -4,7 +4,7 @@
 // is located on the 7th-order continuous extension (HNW I, sec. II.6) with Brent's method
 // (R. P. Brent, "Algorithms for Minimization without Derivatives", 1973, ch. 4, procedure
 // zero): inverse quadratic interpolation / secant steps safeguarded by bisection, converging
-// to a bracket narrower than 2 (4 eps |t| + time_tol_s). A root that makes g touch zero
+// to a bracket no wider than time_tol_s + 4 eps |t|. A root that makes g touch zero
 // without changing sign inside one step (an even number of roots) is not seen: keep steps
 // shorter than the time between roots (AdaptiveOptions::h_max_s) when that matters.
 #pragma once
@@ -20,8 +20,9 @@
 
 namespace evade {
 
-/// Which sign changes count: kRising = g goes from < 0 to >= 0 (e.g. range rate at a
-/// closest approach), kFalling = from > 0 to <= 0.
+/// Which sign changes count, in increasing physical time whatever the integration direction:
+/// kRising = g goes from < 0 to >= 0 (e.g. range rate at a closest approach), kFalling =
+/// from > 0 to <= 0.
 enum class EventDirection { kAny = 0, kRising = 1, kFalling = -1 };
 
 struct EventOptions {
@@ -36,7 +37,7 @@ template <class Vector>
 struct EventRecord {
   double t_s = 0.0;   ///< event time [s]
   Vector x;           ///< state at t_s (dense output)
-  int direction = 0;  ///< +1: g rose through zero, -1: g fell through zero
+  int direction = 0;  ///< +1: g rises through zero as time increases, -1: g falls
 };
 
 /// Root of a scalar function on [a, b] with g(a) g(b) <= 0 (Brent's zero, 1973). Returns
@@ -113,7 +114,9 @@ std::optional<EventRecord<Vector>> locate_event_in_step(const Dop853<Vector>& in
   // g_prev == 0 was reported at the end of the previous step (or is the initial point).
   if (g_prev == 0.0 || !std::isfinite(g_prev) || !std::isfinite(g_now)) return std::nullopt;
   if ((g_prev > 0.0) == (g_now > 0.0) && g_now != 0.0) return std::nullopt;
-  const int dir = (g_prev < 0.0) ? +1 : -1;
+  // Sign change in integration order, converted to increasing physical time.
+  const int forward = (integ.t_s() > integ.t_prev_s()) ? +1 : -1;
+  const int dir = ((g_prev < 0.0) ? +1 : -1) * forward;
   if (opt.direction != EventDirection::kAny && static_cast<int>(opt.direction) != dir) {
     return std::nullopt;
   }
