@@ -50,7 +50,7 @@ static const NodeConfig& checked(const NodeConfig& cfg) {
   return cfg;
 }
 
-GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg)
+GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
     : lcm_(lcm),
       cfg_(checked(cfg)),
       law_(cfg.guidance),
@@ -58,8 +58,8 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg)
       future_us_(static_cast<std::int64_t>(std::llround(cfg.future_tolerance_s * 1e6))),
       queue_(static_cast<std::size_t>(cfg.queue_capacity)),
       armed_(cfg.armed),
-      cmd_pub_(lcm, kChanCmd),
-      status_pub_(lcm, kChanStatus) {
+      cmd_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmd),
+      status_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanStatus) {
   if (lcm_ == nullptr) throw std::invalid_argument("GuidanceNode: lcm is null");
   const char* names[kInCount] = {kChanAngles, kChanNav, kChanArm};
   for (int c = 0; c < kInCount; ++c) {

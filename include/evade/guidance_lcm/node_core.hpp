@@ -52,9 +52,10 @@ enum InputChannel : int { kInAngles = 0, kInNav = 1, kInArm = 2, kInCount = 3 };
 
 class GuidanceNode {
  public:
-  /// Subscribes on lcm (not owned) and preallocates everything. Throws std::invalid_argument
-  /// on a bad config, std::runtime_error if LCM refuses a subscription.
-  GuidanceNode(lcm_t* lcm, const NodeConfig& cfg);
+  /// Subscribes on lcm (not owned) and preallocates everything; publishes on out_lcm if
+  /// given (e.g. a file:// log in write mode during replay), else on lcm. Throws
+  /// std::invalid_argument on a bad config, std::runtime_error if LCM refuses a subscription.
+  GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm = nullptr);
   ~GuidanceNode();
   GuidanceNode(const GuidanceNode&) = delete;
   GuidanceNode& operator=(const GuidanceNode&) = delete;

@@ -1,0 +1,153 @@
+// evade_guidance_node: the paper-000 close-range evasion guidance (guidance_law.hpp) as a
+// real-time LCM node. Inputs evade_angles_t / evade_nav_state_t / evade_arm_t (and, with
+// --lockstep, evade_sim_clock_t); outputs one evade_thrust_cmd_t per cycle and
+// evade_guidance_status_t. Design and requirement IDs: docs/parts/design_node.md.
+// Exit codes: 0 normal stop (signal, --max-cycles, end of input), 1 runtime failure,
+// 2 bad input (flags or config, with the key, value and allowed range).
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+#include <lcm/lcm.h>
+#include <nlohmann/json.hpp>
+
+#include "evade/config/scenario.hpp"
+#include "evade/guidance_lcm/node_core.hpp"
+#include "node_loop.hpp"
+#include "node_options.hpp"
+
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+extern "C" void on_signal(int) { g_stop = 1; }
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  std::size_t k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  if (k >= v.size()) k = v.size() - 1;
+  return v[k];
+}
+
+struct LcmDeleter {
+  void operator()(lcm_t* l) const {
+    if (l != nullptr) lcm_destroy(l);
+  }
+};
+using LcmPtr = std::unique_ptr<lcm_t, LcmDeleter>;
+
+LcmPtr open_lcm(const std::string& url) {
+  LcmPtr l(lcm_create(url.empty() ? nullptr : url.c_str()));
+  if (!l) throw std::runtime_error("cannot open LCM provider '" + url + "'");
+  return l;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace evade;
+  node::NodeOptions opts;
+  CLI::App app{"evade_guidance_node: paper-000 close-range evasion guidance over LCM",
+               "evade_guidance_node"};
+  node::add_options(app, opts);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+
+  guidance_lcm::NodeConfig cfg;
+  try {
+    cfg = node::make_node_config(opts);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
+    return 2;
+  }
+
+  try {
+    LcmPtr in = open_lcm(opts.lcm_url);
+    LcmPtr out;
+    if (!opts.out_lcm_url.empty()) out = open_lcm(opts.out_lcm_url);
+    guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get());
+
+    struct sigaction sa {};
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+
+    if (opts.realtime) node::try_realtime(opts.rt_priority);
+    if (!opts.quiet)
+      std::fprintf(stderr, "evade_guidance_node: %s, %s, max accel %.6g m/s^2, stale %.6g ms, "
+                   "%s\n", opts.lockstep ? "lockstep" : "fixed rate",
+                   opts.lcm_url.empty() ? "default LCM URL" : opts.lcm_url.c_str(),
+                   cfg.guidance.max_accel_mps2, cfg.stale_limit_s * 1e3,
+                   cfg.armed ? "armed" : "disarmed");
+
+    node::LoopLimits lim;
+    lim.max_cycles = opts.max_cycles;
+    lim.idle_exit_s = opts.idle_exit_s;
+    lim.progress = !opts.quiet;
+    node::LoopResult res = opts.lockstep
+                               ? node::run_lockstep(nodecore, lim, &g_stop)
+                               : node::run_fixed_rate(nodecore, opts.rate_hz, lim, &g_stop);
+
+    const auto& c = nodecore.counts();
+    const auto& cs = nodecore.compute_stats();
+    const auto& ws = nodecore.wakeup_stats();
+    if (!opts.quiet)
+      std::fprintf(stderr,
+                   "evade_guidance_node: stopped (%s) after %lld cycles; inputs %lld = consumed "
+                   "%lld + rejected %lld + stale %lld + superseded %lld + dropped %lld; seq gaps "
+                   "%lld; watchdog cycles %lld; overruns %lld; cycle p50 %.1f us p99 %.1f us max "
+                   "%.1f us\n",
+                   res.why, static_cast<long long>(nodecore.cycles()),
+                   static_cast<long long>(c.received), static_cast<long long>(c.consumed),
+                   static_cast<long long>(c.rejected), static_cast<long long>(c.stale),
+                   static_cast<long long>(c.superseded), static_cast<long long>(c.dropped),
+                   static_cast<long long>(c.seq_gaps),
+                   static_cast<long long>(nodecore.watchdog_cycles()),
+                   static_cast<long long>(cs.overruns()), cs.quantile(0.5), cs.quantile(0.99),
+                   cs.max_us());
+    if (opts.stats_json) {
+      nlohmann::json j;
+      j["mode"] = opts.lockstep ? "lockstep" : "fixed_rate";
+      j["rate_hz"] = opts.rate_hz;
+      j["cycles"] = nodecore.cycles();
+      j["overruns"] = cs.overruns();
+      j["inputs"] = {{"received", c.received},     {"consumed", c.consumed},
+                     {"rejected", c.rejected},     {"stale", c.stale},
+                     {"superseded", c.superseded}, {"dropped", c.dropped},
+                     {"seq_gaps", c.seq_gaps}};
+      j["watchdog_cycles"] = nodecore.watchdog_cycles();
+      j["compute_us"] = {{"p50_last_1024", cs.quantile(0.5)},
+                         {"p99_last_1024", cs.quantile(0.99)},
+                         {"max", cs.max_us()}};
+      if (!res.wakeup_us.empty()) {
+        j["wakeup_latency_us"] = {{"samples", res.wakeup_us.size()},
+                                  {"p50", quantile(res.wakeup_us, 0.5)},
+                                  {"p99", quantile(res.wakeup_us, 0.99)},
+                                  {"p999", quantile(res.wakeup_us, 0.999)},
+                                  {"max", quantile(res.wakeup_us, 1.0)}};
+      } else {
+        j["wakeup_latency_us"] = {{"p50_last_1024", ws.quantile(0.5)},
+                                  {"p99_last_1024", ws.quantile(0.99)},
+                                  {"max", ws.max_us()}};
+      }
+      j["exit_reason"] = res.why;
+      std::printf("%s\n", j.dump(2).c_str());
+    }
+    return res.exit_code;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "evade_guidance_node: failed: %s\n", e.what());
+    return 1;
+  }
+}

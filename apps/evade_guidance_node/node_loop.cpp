@@ -1,0 +1,150 @@
+// Schedulers of evade_guidance_node (see node_loop.hpp).
+#include "node_loop.hpp"
+
+#include <sched.h>
+#include <sys/mman.h>
+#include <time.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+namespace evade::node {
+namespace {
+
+constexpr std::int64_t kNsPerS = 1000000000;
+
+std::int64_t now_ns(clockid_t clk) {
+  timespec ts{};
+  clock_gettime(clk, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * kNsPerS + ts.tv_nsec;
+}
+
+timespec to_timespec(std::int64_t ns) {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(ns / kNsPerS);
+  ts.tv_nsec = static_cast<long>(ns % kNsPerS);
+  return ts;
+}
+
+void progress_line(const guidance_lcm::GuidanceNode& node) {
+  const auto& c = node.counts();
+  std::fprintf(stderr,
+               "evade_guidance_node: %lld cycles, mode %d, in %lld (consumed %lld rejected %lld "
+               "stale %lld superseded %lld dropped %lld), overruns %lld\n",
+               static_cast<long long>(node.cycles()), node.last_command().mode,
+               static_cast<long long>(c.received), static_cast<long long>(c.consumed),
+               static_cast<long long>(c.rejected), static_cast<long long>(c.stale),
+               static_cast<long long>(c.superseded), static_cast<long long>(c.dropped),
+               static_cast<long long>(node.compute_stats().overruns()));
+}
+
+}  // namespace
+
+bool try_realtime(int priority) {
+  bool ok = true;
+  sched_param sp{};
+  sp.sched_priority = priority;
+  if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0) {
+    const int e = errno;
+    std::fprintf(stderr,
+                 "evade_guidance_node: --realtime: SCHED_FIFO priority %d refused (%s%s); "
+                 "continuing with the default scheduler, timing will be less regular\n",
+                 priority, std::strerror(e),
+                 e == EPERM ? ": needs root, CAP_SYS_NICE or an rtprio limit" : "");
+    ok = false;
+  }
+  if (mlockall(MCL_CURRENT | MCL_FUTURE) != 0) {
+    const int e = errno;
+    std::fprintf(stderr,
+                 "evade_guidance_node: --realtime: mlockall refused (%s%s); continuing "
+                 "without locked memory, page faults may delay cycles\n",
+                 std::strerror(e),
+                 (e == EPERM || e == ENOMEM) ? ": needs CAP_IPC_LOCK or a memlock limit" : "");
+    ok = false;
+  }
+  return ok;
+}
+
+LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, const LoopLimits& lim,
+                          volatile std::sig_atomic_t* stop) {
+  LoopResult res;
+  if (lim.max_cycles > 0 && lim.max_cycles <= 10000000)
+    res.wakeup_us.reserve(static_cast<std::size_t>(lim.max_cycles));
+  const std::int64_t period_ns = static_cast<std::int64_t>(1e9 / rate_hz + 0.5);
+  std::int64_t deadline = now_ns(CLOCK_MONOTONIC) + period_ns;
+  std::int64_t next_progress = deadline + 10 * kNsPerS;
+  while (*stop == 0) {
+    const timespec ts = to_timespec(deadline);
+    const int rc = clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr);
+    if (rc == EINTR) continue;  // a signal: the loop condition decides
+    const std::int64_t wake = now_ns(CLOCK_MONOTONIC);
+    const double late_us = static_cast<double>(wake - deadline) * 1e-3;
+    node.record_wakeup_latency(late_us);
+    if (res.wakeup_us.size() < res.wakeup_us.capacity()) res.wakeup_us.push_back(late_us);
+
+    if (node.drain() < 0) {
+      res.exit_code = 1;
+      res.why = "LCM receive error";
+      break;
+    }
+    node.run_cycle(now_ns(CLOCK_REALTIME) / 1000);
+    const std::int64_t done = now_ns(CLOCK_MONOTONIC);
+    node.record_compute_time(static_cast<double>(done - wake) * 1e-3);
+
+    deadline += period_ns;
+    if (done > deadline) {  // overrun: count once, re-anchor on the next future boundary
+      node.record_overrun();
+      deadline += ((done - deadline) / period_ns + 1) * period_ns;
+    }
+    if (lim.max_cycles > 0 && node.cycles() >= lim.max_cycles) {
+      res.why = "max cycles reached";
+      break;
+    }
+    if (lim.progress && done >= next_progress) {
+      progress_line(node);
+      next_progress = done + 10 * kNsPerS;
+    }
+  }
+  if (*stop != 0) res.why = "signal";
+  return res;
+}
+
+LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, const LoopLimits& lim,
+                        volatile std::sig_atomic_t* stop) {
+  LoopResult res;
+  std::int64_t last_tick = now_ns(CLOCK_MONOTONIC);
+  std::int64_t next_progress = last_tick + 10 * kNsPerS;
+  while (*stop == 0) {
+    std::int64_t tick_utime = 0;
+    const int rc = node.wait_for_tick(100, &tick_utime);
+    const std::int64_t t = now_ns(CLOCK_MONOTONIC);
+    if (rc < 0) {  // e.g. the end of a file:// log
+      res.why = "end of LCM input";
+      break;
+    }
+    if (rc == 0) {
+      if (lim.idle_exit_s > 0.0 &&
+          static_cast<double>(t - last_tick) * 1e-9 >= lim.idle_exit_s) {
+        res.why = "idle timeout";
+        break;
+      }
+      continue;
+    }
+    last_tick = t;
+    node.run_cycle(tick_utime);
+    node.record_compute_time(static_cast<double>(now_ns(CLOCK_MONOTONIC) - t) * 1e-3);
+    if (lim.max_cycles > 0 && node.cycles() >= lim.max_cycles) {
+      res.why = "max cycles reached";
+      break;
+    }
+    if (lim.progress && t >= next_progress) {
+      progress_line(node);
+      next_progress = t + 10 * kNsPerS;
+    }
+  }
+  if (*stop != 0) res.why = "signal";
+  return res;
+}
+
+}  // namespace evade::node
