@@ -1,0 +1,65 @@
+// Configuration of the close-range evasion simulator (paper 000, sec. 4 simulation).
+//
+// Truth: satellite and debris, each under two-body (+ J2) gravity in ECI (dynamics module),
+// integrated together with DOP853; the satellite also gets the actuator's acceleration, held
+// constant between command changes (zero-order hold). Times are seconds from the scenario
+// epoch (t = 0 is the epoch of the scenario states).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "evade/core/constants.hpp"
+#include "evade/core/state.hpp"
+#include "evade/dynamics/dop853.hpp"
+#include "evade/dynamics/gravity.hpp"
+#include "evade/guidance/guidance_law.hpp"
+
+namespace evade::sim {
+
+/// Angle sensor (satellite-centred ECI-parallel frame, paper 000 eq. 13–14). The default is
+/// the ideal sensor: noise-free angles plus their true rates at 50 Hz, no latency.
+struct SensorConfig {
+  double rate_hz = 50.0;          ///< sample rate (0, 1000]
+  double noise_rad = 0.0;         ///< 1σ white noise on ε and on β·cos ε (tangent) [rad]
+  double bias_rad = 0.0;          ///< constant bias added to ε and β [rad]
+  double latency_s = 0.0;         ///< delay from time of validity to delivery [s]
+  double dropout_prob = 0.0;      ///< probability a sample is lost [0, 1)
+  bool provide_rates = true;      ///< rate-stabilised tracker: also ε̇, β̇
+  double rate_noise_radps = 0.0;  ///< 1σ white noise on ε̇ and β̇ cos ε [rad/s]
+  bool provide_range = false;     ///< also range and range rate (radar)
+  double range_noise_m = 0.0;     ///< 1σ on range [m]
+  double range_rate_noise_mps = 0.0;  ///< 1σ on range rate [m/s]
+  std::uint64_t seed = 1;         ///< std::mt19937_64 seed
+};
+
+/// Thruster: applies the command after latency_s, clipped to max_accel_mps2, with a random
+/// direction error (angle ~ N(0, direction_error_rad²) about a random axis ⊥ the command).
+struct ActuatorConfig {
+  double max_accel_mps2 = 100.0;    ///< hardware limit (0, 1000]
+  double direction_error_rad = 0.0; ///< 1σ pointing error [rad]
+  double latency_s = 0.0;           ///< command-to-thrust delay [s]
+  std::uint64_t seed = 2;
+};
+
+struct SimConfig {
+  StateEci satellite0;  ///< at the epoch (t = 0)
+  StateEci debris0;     ///< at the epoch (t = 0)
+  GravityModel gravity = GravityModel::kTwoBodyJ2;
+  EarthModel earth = kEarthDefault;
+  double encounter_search_s = 120.0;  ///< look for the nominal closest approach in [0, this]
+  double detect_before_tca_s = 10.0;  ///< start the simulation this long before the nominal TCA
+  double guidance_rate_hz = 50.0;     ///< exchange rate with the guidance (0, 1000]
+  double post_tca_s = 0.0;            ///< keep simulating this long after the closest approach
+  double max_duration_s = 3600.0;     ///< give up (no closest approach) after this long
+  bool armed = true;
+  guidance::GuidanceConfig guidance;
+  SensorConfig sensor;
+  ActuatorConfig actuator;
+  AdaptiveOptions integrator = AdaptiveOptions::tight();
+
+  /// Throws std::invalid_argument naming the field, its value and the allowed range.
+  void validate() const;
+};
+
+}  // namespace evade::sim

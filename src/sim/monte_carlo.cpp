@@ -1,0 +1,88 @@
+// Monte Carlo driver (see include/evade/sim/monte_carlo.hpp).
+#include "evade/sim/monte_carlo.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+namespace evade::sim {
+
+namespace {
+
+std::uint64_t splitmix64(std::uint64_t seed, std::uint64_t i) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (i + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) throw std::invalid_argument("percentile: no values");
+  std::sort(values.begin(), values.end());
+  const double pos = (p / 100.0) * static_cast<double>(values.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(pos));
+  const std::size_t hi = std::min(lo + 1, values.size() - 1);
+  const double frac = pos - static_cast<double>(lo);
+  return values[lo] + frac * (values[hi] - values[lo]);
+}
+
+MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t seed,
+                                 int threads, const std::function<void(int, int)>& on_done) {
+  if (runs < 1) throw std::invalid_argument("monte carlo: runs = " + std::to_string(runs) +
+                                            " outside [1, inf)");
+  base.validate();
+  threads = std::max(1, std::min(threads, runs));
+  MonteCarloResult r;
+  r.miss_m.assign(static_cast<std::size_t>(runs), 0.0);
+  r.dv_mps.assign(static_cast<std::size_t>(runs), 0.0);
+  std::atomic<int> next{0};
+  std::mutex mu;
+  int done = 0;
+  std::exception_ptr error;
+  auto worker = [&]() {
+    for (;;) {
+      const int i = next.fetch_add(1);
+      if (i >= runs) return;
+      try {
+        SimConfig c = base;
+        c.sensor.seed = splitmix64(seed, 2 * static_cast<std::uint64_t>(i));
+        c.actuator.seed = splitmix64(seed, 2 * static_cast<std::uint64_t>(i) + 1);
+        auto ep = make_in_process_endpoint(c.guidance, c.armed);
+        const SimResult s = run_simulation(c, *ep);
+        if (!s.closest_approach_found) throw std::runtime_error("no closest approach found");
+        std::lock_guard<std::mutex> lock(mu);
+        r.miss_m[static_cast<std::size_t>(i)] = s.miss_m;
+        r.dv_mps[static_cast<std::size_t>(i)] = s.dv_mps;
+        ++done;
+        if (on_done) on_done(done, runs);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mu);
+        if (!error) error = std::current_exception();
+        next.store(runs);
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  r.miss_min_m = *std::min_element(r.miss_m.begin(), r.miss_m.end());
+  r.miss_max_m = *std::max_element(r.miss_m.begin(), r.miss_m.end());
+  r.miss_p5_m = percentile(r.miss_m, 5.0);
+  r.miss_p50_m = percentile(r.miss_m, 50.0);
+  r.miss_p95_m = percentile(r.miss_m, 95.0);
+  double sum = 0.0;
+  for (double m : r.miss_m) sum += m;
+  r.miss_mean_m = sum / static_cast<double>(runs);
+  return r;
+}
+
+}  // namespace evade::sim
