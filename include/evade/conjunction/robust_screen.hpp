@@ -1,0 +1,78 @@
+// Conjunction screening that cannot miss an approach below the threshold (issue 6), for one
+// pair or a catalog, and a brute-force fine-step reference to test it against.
+//
+// The span is cut into grid steps [t_a, t_b] (step_s). For every object and step:
+//   * the trajectory stays within g h^2/8 of the chord r(t_a) -> r(t_b) componentwise
+//     (interpolation error of a function whose second derivative is bounded by g, the
+//     largest gravity acceleration on the orbit, mu / r_perigee^2, with a J2 margin);
+//   * so a pair can come within D during the step only if the boxes around the two chords,
+//     padded by g h^2/8 + D/2, overlap. Boxes go into a uniform grid whose cells are as
+//     large as the largest box (each box touches at most 8 cells); pairs are formed per
+//     cell and kept once (in the cell that holds the low corner of their box overlap).
+// Before that, the apogee/perigee filter (Hoots, Crawford & Roehrich, Celest. Mech. 33,
+// 1984) removes pairs whose radius ranges are more than D apart.
+// Narrow phase, per candidate pair and step, branch and bound on [a, b]:
+//   relative position rho(t), rho'' = g_j - g_i, |rho''| <= A = min(g_i + g_j, K R_max)
+//   (K = 2 mu / r_min^3: the gravity gradient's largest eigenvalue, with a J2 margin);
+//   lower bound of |rho| on [a, b] = distance of the chord rho(a) -> rho(b) from the
+//   origin - A (b-a)^2 / 8. The interval is dropped when the bound exceeds D. Otherwise the
+//   range rate f = rho.rho' is examined: f' = |rho'|^2 + rho.rho'' >= V_min^2 - R_max A,
+//   V_min = (|rho'(a)| + |rho'(b)| - A (b-a)) / 2; when that is > 0, f is increasing, has
+//   at most one root in [a, b], and a closest approach exists iff f(a) < 0 <= f(b); it is
+//   located by Brent's method (events.hpp) on f and kept if its miss is <= D. If f cannot
+//   be shown monotone (slow co-orbital pairs), [a, b] is halved down to leaf_s and the sign
+//   test is applied on each leaf (docs/parts/validation_002.md bounds what that can miss).
+// The steps are split between threads (std::thread); events are merged and sorted.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "evade/conjunction/types.hpp"
+#include "evade/dynamics/dop853.hpp"
+#include "evade/dynamics/gravity.hpp"
+
+namespace evade::conjunction {
+
+struct ScreenOptions {
+  double threshold_m = 5000.0;    ///< D: report every closest approach with miss <= D_ij
+  bool include_warning_radius = true;  ///< D_ij = max(D, N R_c(i, j)) instead of D
+  double warning_multiple = 5.0;  ///< N for the warning flag (and D_ij above)
+  double step_s = 60.0;           ///< grid step h [s]
+  double leaf_s = 0.5;            ///< smallest subdivision of the narrow phase [s]
+  double tca_tol_s = 1e-9;        ///< Brent bracket tolerance on the TCA [s]
+  int threads = 2;                ///< worker threads (>= 1)
+  GravityModel gravity = GravityModel::kTwoBody;
+  EarthModel earth = kEarthDefault;
+  AdaptiveOptions integ = AdaptiveOptions::tight();  ///< J2 path only
+  /// Called from the first worker with its fraction done in [0, 1] (may be empty).
+  std::function<void(double)> progress;
+  /// Throws std::invalid_argument naming the option, value and allowed range.
+  void validate() const;
+};
+
+struct ScreenStats {
+  long steps = 0;                 ///< grid steps
+  long pairs_checked = 0;         ///< pairs sharing a grid cell (box tests done)
+  long candidates = 0;            ///< pairs whose boxes overlap and that pass apogee/perigee
+  long refined = 0;               ///< intervals examined by the narrow phase
+  long root_solves = 0;           ///< Brent solves on the range rate
+  long pairs_after_apogee_perigee = 0;  ///< pairs left by the apogee/perigee filter (static)
+};
+
+struct ScreenResult {
+  std::vector<Conjunction> events;  ///< sorted by tca_s, then i, j
+  ScreenStats stats;
+};
+
+/// Screens [0, span_s]. Objects are validated first (std::invalid_argument on bad input).
+ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
+                           const ScreenOptions& opt);
+
+/// Reference: every pair sampled every sample_step_s; a sign change - to + of the range
+/// rate between samples is refined by Brent's method; kept if miss <= D_ij. O(N^2 T).
+ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double span_s,
+                                double sample_step_s, const ScreenOptions& opt);
+
+}  // namespace evade::conjunction

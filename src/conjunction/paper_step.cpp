@@ -1,0 +1,139 @@
+// Paper 002's adaptive step (section 2, eq. 3-5, procedure `Step`), corrected reading; see
+// paper_step.hpp for the rule and the two defects of the printed pseudo-code.
+#include "evade/conjunction/paper_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace evade::conjunction {
+
+void PaperStepParams::validate() const {
+  auto check = [](const char* key, double v, double lo, bool lo_open, const char* range) {
+    if (!std::isfinite(v) || (lo_open ? !(v > lo) : !(v >= lo))) {
+      std::ostringstream os;
+      os << "paper_step." << key << " = " << v << " outside " << range;
+      throw std::invalid_argument(os.str());
+    }
+  };
+  check("h_sim_s", h_sim_s, 0.0, true, "(0, inf)");
+  check("n_warning", n_warning, 1.0, true, "(1, inf)");
+  check("m_warning_period", m_warning_period, 1.0, true, "(1, inf)");
+  check("l_enlarge", l_enlarge, 1.0, true, "(1, inf)");
+  check("l_reduce", l_reduce, 1.0, true, "(1, inf)");
+  check("h_min_s", h_min_s, 0.0, true, "(0, h_sim_s]");
+  if (h_min_s > h_sim_s) check("h_min_s", -1.0, 0.0, true, "(0, h_sim_s]");
+}
+
+PairSample sample_pair(const StateEci& si, const StateEci& sj, double rc_m, double n_warning) {
+  const Vec3 dr = sj.r_eci_m - si.r_eci_m;  // eq. 3 convention: j relative to i
+  const Vec3 dv = sj.v_eci_mps - si.v_eci_mps;
+  PairSample p;
+  p.distance_m = dr.norm();
+  p.radial_speed_mps = p.distance_m > 0.0 ? dr.dot(dv) / p.distance_m : 0.0;  // eq. 4
+  p.rel_speed_mps = dv.norm();
+  p.collision = p.distance_m <= rc_m;               // eq. 2
+  p.warning = p.distance_m <= n_warning * rc_m;     // R_CA = N R_c
+  return p;
+}
+
+double paper_next_step_s(const PairSample& p, double h_now_s, const PaperStepParams& prm) {
+  double h;
+  const bool approaching =
+      prm.literal_sign ? p.radial_speed_mps > 0.0 : p.radial_speed_mps < 0.0;
+  if (prm.literal_reset) h_now_s = prm.h_sim_s;
+  if (!approaching) {
+    // Receding or not closing (dR.dV >= 0; corrected sign): back towards h_sim.
+    h = std::min(prm.h_sim_s, prm.l_enlarge * h_now_s);
+  } else if (!p.collision) {
+    const double t_encounter_s = p.distance_m / std::abs(p.radial_speed_mps);  // eq. 5
+    const double t_ca_s = prm.m_warning_period * h_now_s;               // T_CA = M h_now
+    h = (t_encounter_s > t_ca_s) ? h_now_s : h_now_s / prm.l_reduce;
+  } else {
+    h = prm.h_sim_s;
+  }
+  return std::max(h, prm.h_min_s);
+}
+
+PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
+                         const PaperStepParams& prm, Ephemeris& eph, bool record_trace) {
+  prm.validate();
+  if (!(span_s >= 0.0) || !std::isfinite(span_s)) {
+    throw std::invalid_argument("span_s = " + std::to_string(span_s) + " outside [0, inf)");
+  }
+  if (eph.size() != objects.size()) throw std::invalid_argument("screen_paper: ephemeris size");
+  const std::size_t n = objects.size();
+  PaperResult res;
+  if (n < 2) return res;
+  // Per pair: the best warning sample of the current encounter not yet reported.
+  struct Pending {
+    bool active = false;
+    bool collided = false;
+    Conjunction best;
+  };
+  std::vector<Pending> pending(n * (n - 1) / 2);
+  auto pair_index = [n](std::size_t i, std::size_t j) { return i * (2 * n - i - 1) / 2 + (j - i - 1); };
+  std::vector<StateEci> s;
+  double t = 0.0;
+  double h_now = prm.h_sim_s;
+  for (;;) {
+    eph.states_at(t, s);
+    double h_next = prm.h_sim_s;
+    TraceRow row;
+    row.t_s = t;
+    row.step_s = h_now;
+    bool first = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const double rc = collision_radius_m(objects[i], objects[j]);
+        const PairSample p = sample_pair(s[i], s[j], rc, prm.n_warning);
+        const double h_pair = paper_next_step_s(p, h_now, prm);
+        Pending& pd = pending[pair_index(i, j)];
+        Conjunction c{i, j, t, p.distance_m, p.rel_speed_mps, p.collision, p.warning};
+        if (p.collision) {
+          res.events.push_back(c);
+          pd.collided = true;
+        }
+        if (p.warning && !p.collision) {
+          if (!pd.active || p.distance_m < pd.best.miss_m) pd.best = c;
+          pd.active = true;
+        }
+        if (pd.active && !(p.radial_speed_mps < 0.0)) {  // encounter over
+          if (!pd.collided) res.events.push_back(pd.best);
+          pd = Pending{};
+        } else if (!pd.active && !(p.radial_speed_mps < 0.0)) {
+          pd.collided = false;
+        }
+        if (first || h_pair < h_next || (h_pair == h_next && p.distance_m < row.distance_m)) {
+          h_next = std::min(h_next, h_pair);
+          row.i = i;
+          row.j = j;
+          row.distance_m = p.distance_m;
+          row.radial_speed_mps = p.radial_speed_mps;
+          row.collision = p.collision;
+          row.warning = p.warning;
+          first = false;
+        }
+      }
+    }
+    if (record_trace) res.trace.push_back(row);
+    const double t_next = t + h_next;
+    if (t_next > span_s) break;
+    t = t_next;
+    h_now = h_next;
+    ++res.steps;
+  }
+  for (std::size_t i = 0; i < n; ++i) {  // encounters still open at the end of the span
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Pending& pd = pending[pair_index(i, j)];
+      if (pd.active && !pd.collided) res.events.push_back(pd.best);
+    }
+  }
+  std::sort(res.events.begin(), res.events.end(), [](const Conjunction& a, const Conjunction& b) {
+    return a.tca_s < b.tca_s || (a.tca_s == b.tca_s && (a.i < b.i || (a.i == b.i && a.j < b.j)));
+  });
+  return res;
+}
+
+}  // namespace evade::conjunction

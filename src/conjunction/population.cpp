@@ -1,0 +1,121 @@
+// Seeded synthetic LEO population (see population.hpp for the documented distribution).
+#include "evade/conjunction/population.hpp"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "evade/conjunction/kepler_orbit.hpp"
+#include "evade/core/elements.hpp"
+
+namespace evade::conjunction {
+
+void PopulationOptions::validate() const {
+  auto fail = [](const std::string& what) { throw std::invalid_argument("population." + what); };
+  if (count > 10'000'000) fail("count = " + std::to_string(count) + " outside [0, 1e7]");
+  if (!(coorbital_fraction >= 0.0 && crossing_fraction >= 0.0 &&
+        coorbital_fraction + crossing_fraction <= 1.0)) {
+    fail("coorbital_fraction + crossing_fraction outside [0, 1], each >= 0");
+  }
+  if (!(span_s >= 0.0) || !std::isfinite(span_s)) fail("span_s outside [0, inf)");
+}
+
+std::vector<SpaceObject> synthetic_population(const PopulationOptions& opt) {
+  opt.validate();
+  std::mt19937_64 rng(opt.seed);
+  auto uni = [&rng](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  auto normal = [&rng](double m, double s) { return std::normal_distribution<double>(m, s)(rng); };
+  const double mu = opt.earth.mu_m3ps2;
+  const double re = opt.earth.re_m;
+  auto size_error = [&](SpaceObject& o) {
+    o.size_m = std::exp(uni(std::log(0.1), std::log(10.0)));
+    o.pos_error_m = uni(10.0, 100.0);
+  };
+  auto background_elements = [&]() {
+    OrbitalElements oe;
+    const double u = uni(0.0, 1.0);
+    double hp;
+    if (u < 0.30) hp = normal(550e3, 30e3);
+    else if (u < 0.55) hp = normal(780e3, 40e3);
+    else if (u < 0.70) hp = normal(1000e3, 60e3);
+    else hp = uni(300e3, 2000e3);
+    hp = std::clamp(hp, 250e3, 2100e3);
+    oe.e = uni(0.0, 0.01);
+    oe.a_m = (re + hp) / (1.0 - oe.e);
+    const double v = uni(0.0, 1.0);
+    double inc;
+    if (v < 0.25) inc = 53.0;
+    else if (v < 0.35) inc = 86.4;
+    else if (v < 0.65) inc = normal(97.5, 1.0);
+    else if (v < 0.75) inc = 51.6;
+    else inc = uni(0.0, 180.0);
+    oe.i_rad = std::clamp(inc, 0.0, 180.0) * kDegToRad;
+    oe.raan_rad = uni(0.0, kTwoPi);
+    oe.argp_rad = uni(0.0, kTwoPi);
+    oe.true_anomaly_rad = true_from_mean_anomaly(uni(0.0, kTwoPi), oe.e);
+    return oe;
+  };
+
+  const auto n_co = static_cast<std::size_t>(std::floor(opt.count * opt.coorbital_fraction / 2.0)) * 2;
+  const auto n_cx = static_cast<std::size_t>(std::floor(opt.count * opt.crossing_fraction / 2.0)) * 2;
+  const std::size_t n_bg = opt.count - n_co - n_cx;
+  std::vector<SpaceObject> out;
+  out.reserve(opt.count);
+  for (std::size_t k = 0; k < n_bg; ++k) {
+    SpaceObject o;
+    o.name = "bg" + std::to_string(k);
+    o.state = state_from_elements(background_elements(), mu);
+    size_error(o);
+    out.push_back(o);
+  }
+  for (std::size_t k = 0; k < n_co / 2; ++k) {
+    OrbitalElements oe = background_elements();
+    OrbitalElements oe2 = oe;
+    oe2.a_m += uni(-300.0, 300.0);
+    oe2.e = std::max(0.0, oe.e + uni(-2e-4, 2e-4));
+    oe2.i_rad = std::clamp(oe.i_rad + uni(-0.01, 0.01) * kDegToRad, 0.0, kPi);
+    oe2.raan_rad += uni(-0.01, 0.01) * kDegToRad;
+    const double m1 = mean_from_true_anomaly(oe.true_anomaly_rad, oe.e);
+    oe2.true_anomaly_rad = true_from_mean_anomaly(m1 + uni(-0.05, 0.05) * kDegToRad, oe2.e);
+    SpaceObject a, b;
+    a.name = "co" + std::to_string(k) + "a";
+    b.name = "co" + std::to_string(k) + "b";
+    a.state = state_from_elements(oe, mu);
+    b.state = state_from_elements(oe2, mu);
+    size_error(a);
+    size_error(b);
+    out.push_back(a);
+    out.push_back(b);
+  }
+  for (std::size_t k = 0; k < n_cx / 2; ++k) {
+    const double r = re + uni(400e3, 1200e3);
+    Vec3 p(normal(0, 1), normal(0, 1), normal(0, 1));
+    p = p.normalized() * r;
+    const double t_meet = uni(0.0, opt.span_s);
+    // Two horizontal directions at an angle U(20, 160) deg.
+    Vec3 h1 = p.unitOrthogonal();
+    const Vec3 h2 = p.normalized().cross(h1);
+    const double psi = uni(0.0, kTwoPi);
+    const double ang = uni(20.0, 160.0) * kDegToRad;
+    const Vec3 d1 = std::cos(psi) * h1 + std::sin(psi) * h2;
+    const Vec3 d2 = std::cos(psi + ang) * h1 + std::sin(psi + ang) * h2;
+    const double vc = std::sqrt(mu / r);
+    Vec3 off(normal(0, 1), normal(0, 1), normal(0, 1));
+    off = off.normalized() * uni(0.0, 3000.0);
+    StateEci s1{p, vc * d1};
+    StateEci s2{p + off, vc * d2};
+    SpaceObject a, b;
+    a.name = "cx" + std::to_string(k) + "a";
+    b.name = "cx" + std::to_string(k) + "b";
+    a.state = KeplerOrbit(s1, mu).state_at(-t_meet);
+    b.state = KeplerOrbit(s2, mu).state_at(-t_meet);
+    size_error(a);
+    size_error(b);
+    out.push_back(a);
+    out.push_back(b);
+  }
+  return out;
+}
+
+}  // namespace evade::conjunction

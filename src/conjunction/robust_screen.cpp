@@ -1,0 +1,415 @@
+// Robust all-pairs conjunction screening (issue 6; paper 002 eq. 1-2 for the radii):
+// apogee/perigee filter (Hoots et al. 1984), swept-box grid broad phase, branch-and-bound
+// narrow phase with a rigorous lower bound on the distance, Brent's method on the range
+// rate for the TCA. See robust_screen.hpp for the bounds.
+#include "evade/conjunction/robust_screen.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+
+#include "evade/conjunction/ephemeris.hpp"
+#include "evade/dynamics/events.hpp"
+
+namespace evade::conjunction {
+namespace {
+
+// Osculating radius range and gravity are not constant under J2: the margins below cover
+// the J2 short-period radius oscillation (~10 km in LEO) and the J2 part of the
+// acceleration (<= 3 J2 (Re/r)^2 of mu/r^2) and of its gradient (<= 6 J2 (Re/r)^2 of 2mu/r^3).
+constexpr double kJ2RadiusMarginM = 40e3;
+constexpr double kJ2AccelFactor = 4.0;
+constexpr double kJ2GradientFactor = 10.0;
+
+struct ObjectBounds {
+  double r_min_m = 0.0;   // lower bound on |r| over the span
+  double r_max_m = 0.0;   // upper bound on |r| over the span
+  double g_max_mps2 = 0.0;  // upper bound on |r''|
+};
+
+struct PairContext {
+  const std::vector<SpaceObject>* objects = nullptr;
+  const std::vector<ObjectBounds>* bounds = nullptr;
+  const ScreenOptions* opt = nullptr;
+};
+
+double pair_threshold_m(const SpaceObject& a, const SpaceObject& b, const ScreenOptions& opt) {
+  if (!opt.include_warning_radius) return opt.threshold_m;
+  return std::max(opt.threshold_m, warning_radius_m(a, b, opt.warning_multiple));
+}
+
+// Distance from the origin to the segment p -> q.
+double segment_distance_m(const Vec3& p, const Vec3& q) {
+  const Vec3 d = q - p;
+  const double dd = d.squaredNorm();
+  double s = dd > 0.0 ? -p.dot(d) / dd : 0.0;
+  s = std::clamp(s, 0.0, 1.0);
+  return (p + s * d).norm();
+}
+
+struct Endpoint {
+  double t = 0.0;
+  StateEci si;
+  StateEci sj;
+};
+
+double range_rate_product(const StateEci& si, const StateEci& sj) {
+  return (sj.r_eci_m - si.r_eci_m).dot(sj.v_eci_mps - si.v_eci_mps);
+}
+
+// Narrow phase on one grid step for pair (i, j). Returns events through `out`.
+void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const Endpoint& end,
+                  const StateEci& gi, const StateEci& gj, double t_grid, double d_ij,
+                  const PairContext& ctx, Ephemeris& eph, std::vector<Conjunction>& out,
+                  ScreenStats& st) {
+  const ObjectBounds& bi = (*ctx.bounds)[i];
+  const ObjectBounds& bj = (*ctx.bounds)[j];
+  const ScreenOptions& opt = *ctx.opt;
+  const double mu = opt.earth.mu_m3ps2;
+  const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
+  const double a_crude = bi.g_max_mps2 + bj.g_max_mps2;
+  const double r_min = std::min(bi.r_min_m, bj.r_min_m);
+  const SpaceObject& oi = (*ctx.objects)[i];
+  const SpaceObject& oj = (*ctx.objects)[j];
+  const double rc = collision_radius_m(oi, oj);
+
+  auto state_pair = [&](double t) {
+    Endpoint e;
+    e.t = t;
+    e.si = eph.state_near(i, t, gi, t_grid);
+    e.sj = eph.state_near(j, t, gj, t_grid);
+    return e;
+  };
+
+  std::vector<std::pair<Endpoint, Endpoint>> stack;
+  stack.emplace_back(start, end);
+  while (!stack.empty()) {
+    auto [a, b] = std::move(stack.back());
+    stack.pop_back();
+    ++st.refined;
+    const double len = b.t - a.t;
+    const Vec3 rho_a = a.sj.r_eci_m - a.si.r_eci_m;
+    const Vec3 rho_b = b.sj.r_eci_m - b.si.r_eci_m;
+    const Vec3 vel_a = a.sj.v_eci_mps - a.si.v_eci_mps;
+    const Vec3 vel_b = b.sj.v_eci_mps - b.si.v_eci_mps;
+    const double chord_dev_crude = a_crude * len * len / 8.0;
+    const double r_max = std::max(rho_a.norm(), rho_b.norm()) + chord_dev_crude;
+    // Gravity-gradient bound: |g(r_j) - g(r_i)| <= (2 mu / r^3) |rho| along the segment
+    // between the two objects, whose radius is >= r_min - r_max.
+    double acc = a_crude;
+    const double r_seg = r_min - r_max;
+    if (r_seg > 0.0) {
+      double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
+      if (j2) {
+        const double q = opt.earth.re_m / r_seg;
+        k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
+      }
+      acc = std::min(acc, k_grad * r_max);
+    }
+    const double lower_bound = segment_distance_m(rho_a, rho_b) - acc * len * len / 8.0;
+    if (lower_bound > d_ij) continue;
+    const double fa = rho_a.dot(vel_a);
+    const double fb = rho_b.dot(vel_b);
+    const double v_min = 0.5 * (vel_a.norm() + vel_b.norm() - acc * len);
+    const bool monotone = v_min > 0.0 && v_min * v_min > r_max * acc;
+    if (!monotone && len > opt.leaf_s) {
+      const double tm = a.t + 0.5 * len;
+      Endpoint m = state_pair(tm);
+      stack.emplace_back(m, b);
+      stack.emplace_back(a, std::move(m));
+      continue;
+    }
+    if (!(fa < 0.0 && fb >= 0.0)) continue;
+    ++st.root_solves;
+    auto f = [&](double t) {
+      const Endpoint e = state_pair(t);
+      return range_rate_product(e.si, e.sj);
+    };
+    const double tca = brent_root(f, a.t, b.t, fa, fb, opt.tca_tol_s, 200);
+    const Endpoint e = (tca == b.t) ? b : state_pair(tca);
+    const double miss = (e.sj.r_eci_m - e.si.r_eci_m).norm();
+    if (miss <= d_ij) {
+      Conjunction c;
+      c.i = i;
+      c.j = j;
+      c.tca_s = tca;
+      c.miss_m = miss;
+      c.rel_speed_mps = (e.sj.v_eci_mps - e.si.v_eci_mps).norm();
+      c.collision = miss <= rc;
+      c.warning = miss <= opt.warning_multiple * rc;
+      out.push_back(c);
+    }
+  }
+}
+
+std::vector<ObjectBounds> object_bounds(const std::vector<SpaceObject>& objects,
+                                        const ScreenOptions& opt) {
+  std::vector<ObjectBounds> b(objects.size());
+  const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    const OrbitShape s = orbit_shape(objects[k].state, opt.earth.mu_m3ps2);
+    const double margin = j2 ? kJ2RadiusMarginM : 0.0;
+    b[k].r_min_m = std::max(s.perigee_radius_m - margin, 0.5 * s.perigee_radius_m);
+    b[k].r_max_m = s.apogee_radius_m + margin;
+    double g = opt.earth.mu_m3ps2 / (b[k].r_min_m * b[k].r_min_m);
+    if (j2) {
+      const double q = opt.earth.re_m / b[k].r_min_m;
+      g *= 1.0 + kJ2AccelFactor * opt.earth.j2 * q * q;
+    }
+    b[k].g_max_mps2 = g;
+  }
+  return b;
+}
+
+bool apogee_perigee_may_meet(const ObjectBounds& a, const ObjectBounds& b, double d) {
+  return std::max(a.r_min_m, b.r_min_m) - std::min(a.r_max_m, b.r_max_m) <= d;
+}
+
+void sort_events(std::vector<Conjunction>& ev) {
+  std::sort(ev.begin(), ev.end(), [](const Conjunction& a, const Conjunction& b) {
+    if (a.tca_s != b.tca_s) return a.tca_s < b.tca_s;
+    if (a.i != b.i) return a.i < b.i;
+    return a.j < b.j;
+  });
+}
+
+void add_stats(ScreenStats& into, const ScreenStats& s) {
+  into.steps += s.steps;
+  into.pairs_checked += s.pairs_checked;
+  into.candidates += s.candidates;
+  into.refined += s.refined;
+  into.root_solves += s.root_solves;
+}
+
+constexpr std::int64_t kCellOffset = 1 << 20;
+constexpr std::int64_t kCellMax = (1 << 21) - 1;
+
+std::int64_t cell_index(double x, double cell_m) {
+  const double q = std::floor(x / cell_m);
+  return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::clamp(q, -4e6, 4e6)) + kCellOffset,
+                                  0, kCellMax);
+}
+
+std::uint64_t cell_key(std::int64_t ix, std::int64_t iy, std::int64_t iz) {
+  return (static_cast<std::uint64_t>(ix) << 42) | (static_cast<std::uint64_t>(iy) << 21) |
+         static_cast<std::uint64_t>(iz);
+}
+
+struct Worker {
+  const std::vector<SpaceObject>* objects;
+  const std::vector<ObjectBounds>* bounds;
+  const ScreenOptions* opt;
+  double span_s;
+  long nsteps;
+  long k_begin;
+  long k_end;
+  bool report_progress;
+  std::vector<Conjunction> events;
+  ScreenStats stats;
+
+  double grid_time(long k) const {
+    return k >= nsteps ? span_s : std::min(static_cast<double>(k) * opt->step_s, span_s);
+  }
+
+  void run() {
+    const std::size_t n = objects->size();
+    Ephemeris eph(*objects, opt->gravity, opt->earth, opt->integ);
+    PairContext ctx{objects, bounds, opt};
+    double d_max = opt->threshold_m;
+    if (opt->include_warning_radius) {
+      double lmax = 0.0;
+      for (const auto& o : *objects) lmax = std::max(lmax, o.size_m + o.pos_error_m);
+      d_max = std::max(d_max, opt->warning_multiple * 2.0 * lmax);
+    }
+    std::vector<StateEci> sa, sb;
+    std::vector<Vec3> lo(n), hi(n);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    entries.reserve(8 * n);
+    double t_a = grid_time(k_begin);
+    eph.states_at(t_a, sa);
+    const long progress_every = std::max(1L, (k_end - k_begin) / 100);
+    for (long k = k_begin; k < k_end; ++k) {
+      const double t_b = grid_time(k + 1);
+      eph.states_at(t_b, sb);
+      ++stats.steps;
+      const double dt = t_b - t_a;
+      double cell = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double pad = (*bounds)[i].g_max_mps2 * dt * dt / 8.0 + 0.5 * d_max;
+        lo[i] = sa[i].r_eci_m.cwiseMin(sb[i].r_eci_m).array() - pad;
+        hi[i] = sa[i].r_eci_m.cwiseMax(sb[i].r_eci_m).array() + pad;
+        cell = std::max(cell, (hi[i] - lo[i]).maxCoeff());
+      }
+      entries.clear();
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::int64_t x0 = cell_index(lo[i].x(), cell), x1 = cell_index(hi[i].x(), cell);
+        const std::int64_t y0 = cell_index(lo[i].y(), cell), y1 = cell_index(hi[i].y(), cell);
+        const std::int64_t z0 = cell_index(lo[i].z(), cell), z1 = cell_index(hi[i].z(), cell);
+        for (std::int64_t x = x0; x <= x1; ++x)
+          for (std::int64_t y = y0; y <= y1; ++y)
+            for (std::int64_t z = z0; z <= z1; ++z)
+              entries.emplace_back(cell_key(x, y, z), static_cast<std::uint32_t>(i));
+      }
+      std::sort(entries.begin(), entries.end());
+      for (std::size_t r0 = 0; r0 < entries.size();) {
+        std::size_t r1 = r0 + 1;
+        while (r1 < entries.size() && entries[r1].first == entries[r0].first) ++r1;
+        const std::uint64_t key = entries[r0].first;
+        for (std::size_t p = r0; p < r1; ++p) {
+          for (std::size_t q = p + 1; q < r1; ++q) {
+            ++stats.pairs_checked;
+            std::size_t i = entries[p].second, j = entries[q].second;
+            if (i > j) std::swap(i, j);
+            if ((lo[i].array() > hi[j].array()).any() || (lo[j].array() > hi[i].array()).any())
+              continue;
+            const Vec3 corner = lo[i].cwiseMax(lo[j]);
+            if (cell_key(cell_index(corner.x(), cell), cell_index(corner.y(), cell),
+                         cell_index(corner.z(), cell)) != key)
+              continue;  // counted in the cell that holds the overlap's low corner
+            const double d_ij = pair_threshold_m((*objects)[i], (*objects)[j], *opt);
+            if (!apogee_perigee_may_meet((*bounds)[i], (*bounds)[j], d_ij)) continue;
+            ++stats.candidates;
+            narrow_phase(i, j, Endpoint{t_a, sa[i], sa[j]}, Endpoint{t_b, sb[i], sb[j]}, sa[i],
+                         sa[j], t_a, d_ij, ctx, eph, events, stats);
+          }
+        }
+        r0 = r1;
+      }
+      std::swap(sa, sb);
+      t_a = t_b;
+      if (report_progress && opt->progress && ((k - k_begin + 1) % progress_every == 0)) {
+        opt->progress(static_cast<double>(k - k_begin + 1) / static_cast<double>(k_end - k_begin));
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void ScreenOptions::validate() const {
+  auto fail = [](const char* key, double v, const char* range) {
+    std::ostringstream os;
+    os << "screen." << key << " = " << v << " outside " << range;
+    throw std::invalid_argument(os.str());
+  };
+  if (!(threshold_m >= 0.0) || !std::isfinite(threshold_m)) fail("threshold_m", threshold_m, "[0, inf)");
+  if (!(warning_multiple > 1.0) || !std::isfinite(warning_multiple))
+    fail("warning_multiple", warning_multiple, "(1, inf)");
+  if (!(step_s > 0.0) || !std::isfinite(step_s)) fail("step_s", step_s, "(0, inf)");
+  if (!(leaf_s > 0.0) || !std::isfinite(leaf_s)) fail("leaf_s", leaf_s, "(0, inf)");
+  if (!(tca_tol_s > 0.0) || !std::isfinite(tca_tol_s)) fail("tca_tol_s", tca_tol_s, "(0, inf)");
+  if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
+  if (!(earth.mu_m3ps2 > 0.0) || !std::isfinite(earth.mu_m3ps2))
+    fail("earth.mu_m3ps2", earth.mu_m3ps2, "(0, inf)");
+  integ.validate();
+}
+
+ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
+                           const ScreenOptions& opt) {
+  opt.validate();
+  if (!(span_s > 0.0) || !std::isfinite(span_s)) {
+    throw std::invalid_argument("span_s = " + std::to_string(span_s) + " outside (0, inf)");
+  }
+  validate_objects(objects, opt.earth);
+  ScreenResult res;
+  const std::vector<ObjectBounds> bounds = object_bounds(objects, opt);
+  const std::size_t n = objects.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (apogee_perigee_may_meet(bounds[i], bounds[j], pair_threshold_m(objects[i], objects[j], opt)))
+        ++res.stats.pairs_after_apogee_perigee;
+  if (n < 2) return res;
+  const long nsteps = static_cast<long>(std::ceil(span_s / opt.step_s - 1e-12));
+  const int nthreads = static_cast<int>(std::min<long>(opt.threads, std::max(1L, nsteps)));
+  std::vector<Worker> workers;
+  workers.reserve(nthreads);
+  for (int w = 0; w < nthreads; ++w) {
+    const long k0 = nsteps * w / nthreads;
+    const long k1 = nsteps * (w + 1) / nthreads;
+    workers.push_back(Worker{&objects, &bounds, &opt, span_s, nsteps, k0, k1, w == 0, {}, {}});
+  }
+  if (nthreads == 1) {
+    workers[0].run();
+  } else {
+    std::vector<std::thread> threads;
+    std::vector<std::exception_ptr> errors(nthreads);
+    for (int w = 0; w < nthreads; ++w) {
+      threads.emplace_back([&workers, &errors, w]() {
+        try {
+          workers[w].run();
+        } catch (...) {
+          errors[w] = std::current_exception();
+        }
+      });
+    }
+    for (auto& t : threads) t.join();
+    for (auto& e : errors)
+      if (e) std::rethrow_exception(e);
+  }
+  for (auto& w : workers) {
+    res.events.insert(res.events.end(), w.events.begin(), w.events.end());
+    add_stats(res.stats, w.stats);
+  }
+  sort_events(res.events);
+  return res;
+}
+
+ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double span_s,
+                                double sample_step_s, const ScreenOptions& opt) {
+  opt.validate();
+  if (!(sample_step_s > 0.0) || !std::isfinite(sample_step_s)) {
+    throw std::invalid_argument("sample_step_s outside (0, inf)");
+  }
+  validate_objects(objects, opt.earth);
+  ScreenResult res;
+  const std::size_t n = objects.size();
+  if (n < 2) return res;
+  Ephemeris eph(objects, opt.gravity, opt.earth, opt.integ);
+  const long nsteps = static_cast<long>(std::ceil(span_s / sample_step_s - 1e-12));
+  std::vector<StateEci> prev, cur;
+  std::vector<double> f_prev(n * n, 0.0);
+  double t_prev = 0.0;
+  eph.states_at(0.0, prev);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) f_prev[i * n + j] = range_rate_product(prev[i], prev[j]);
+  for (long k = 1; k <= nsteps; ++k) {
+    const double t = (k == nsteps) ? span_s : static_cast<double>(k) * sample_step_s;
+    eph.states_at(t, cur);
+    ++res.stats.steps;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        ++res.stats.pairs_checked;
+        const double fc = range_rate_product(cur[i], cur[j]);
+        double& fp = f_prev[i * n + j];
+        if (fp < 0.0 && fc >= 0.0) {
+          ++res.stats.root_solves;
+          const StateEci gi = prev[i], gj = prev[j];
+          auto f = [&](double tt) {
+            return range_rate_product(eph.state_near(i, tt, gi, t_prev), eph.state_near(j, tt, gj, t_prev));
+          };
+          const double tca = brent_root(f, t_prev, t, fp, fc, opt.tca_tol_s, 200);
+          const StateEci si = eph.state_near(i, tca, gi, t_prev);
+          const StateEci sj = eph.state_near(j, tca, gj, t_prev);
+          const double miss = (sj.r_eci_m - si.r_eci_m).norm();
+          const double d_ij = pair_threshold_m(objects[i], objects[j], opt);
+          if (miss <= d_ij) {
+            const double rc = collision_radius_m(objects[i], objects[j]);
+            res.events.push_back(Conjunction{i, j, tca, miss, (sj.v_eci_mps - si.v_eci_mps).norm(),
+                                             miss <= rc, miss <= opt.warning_multiple * rc});
+          }
+        }
+        fp = fc;
+      }
+    }
+    std::swap(prev, cur);
+    t_prev = t;
+  }
+  sort_events(res.events);
+  return res;
+}
+
+}  // namespace evade::conjunction
