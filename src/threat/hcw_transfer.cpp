@@ -1,0 +1,138 @@
+// HCW 2-impulse rendezvous in closed form and the primer-vector lower bound on the cost of
+// any impulsive rendezvous. Paper 001 (Yu, Wang, Sun 2017) sec. 2.1, eq. 1–3 (C-W transition
+// through impulses); the derivation of the bound is in evade/threat/rendezvous.hpp.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "evade/dynamics/hcw.hpp"
+#include "evade/threat/rendezvous.hpp"
+
+namespace evade::threat {
+namespace {
+
+Vec3 unit_or_zero(const Vec3& v) {
+  const double n = v.norm();
+  return n > 0.0 ? Vec3(v / n) : Vec3::Zero();
+}
+
+}  // namespace
+
+HcwTransfer::HcwTransfer(double n_radps, double transfer_s) : n_(n_radps), T_(transfer_s) {
+  if (!std::isfinite(n_radps) || n_radps <= 0.0) {
+    throw std::invalid_argument("HcwTransfer: mean motion n_radps = " + std::to_string(n_radps) +
+                                " must be finite and > 0");
+  }
+  if (!std::isfinite(transfer_s) || transfer_s <= 0.0) {
+    throw std::invalid_argument("HcwTransfer: transfer time dt_transfer_s = " +
+                                std::to_string(transfer_s) + " must be finite and > 0");
+  }
+  const HcwBlocks b = hcw_stm_blocks(n_, T_);
+  rr_T_ = b.rr;
+  rv_T_ = b.rv;
+  vr_T_ = b.vr;
+  vv_T_ = b.vv;
+  // Φrv(T) is singular when sin(nT) = 0 (out-of-plane block) or when the in-plane block's
+  // determinant 4(1−c)²... − s(4s − 3nT) vanishes (nT = 2πk among others). The 2-impulse
+  // closed form and the SQP's elimination of the end impulses need Φrv(T)⁻¹: reject a
+  // condition number (Frobenius estimate) above 1e9.
+  const double det = rv_T_.determinant();
+  const Mat3 inv = (det != 0.0) ? Mat3(rv_T_.inverse()) : Mat3::Zero();
+  const double cond = rv_T_.norm() * inv.norm();
+  if (det == 0.0 || !std::isfinite(cond) || cond > 1e9) {
+    throw std::invalid_argument(
+        "HcwTransfer: transfer time dt_transfer_s = " + std::to_string(transfer_s) +
+        " makes the HCW 2-impulse problem singular (n*T = " + std::to_string(n_ * T_) +
+        " rad is at a root of det(Phi_rv)); choose another transfer time");
+  }
+  rv_T_inv_ = rv_T_.inverse();
+  for (int j = 0; j <= kPrimerSamples; ++j) {
+    const double tau = T_ * j / kPrimerSamples;
+    const HcwBlocks bj = hcw_stm_blocks(n_, T_ - tau);
+    rv_s_[j] = bj.rv;
+    vv_s_[j] = bj.vv;
+  }
+}
+
+Vec6 HcwTransfer::required_change(const Vec6& x0, const Vec6& xf) const {
+  Vec6 d;
+  d.head<3>() = xf.head<3>() - rr_T_ * x0.head<3>() - rv_T_ * x0.tail<3>();
+  d.tail<3>() = xf.tail<3>() - vr_T_ * x0.head<3>() - vv_T_ * x0.tail<3>();
+  return d;
+}
+
+RendezvousPlan HcwTransfer::two_impulse(const Vec6& d) const {
+  const Vec3 dv1 = rv_T_inv_ * d.head<3>();
+  const Vec3 dv2 = d.tail<3>() - vv_T_ * dv1;
+  RendezvousPlan p;
+  p.impulses = {{0.0, dv1}, {T_, dv2}};
+  p.cost_mps = dv1.norm() + dv2.norm();
+  return p;
+}
+
+double HcwTransfer::two_impulse_cost(const Vec6& d) const {
+  const Vec3 dv1 = rv_T_inv_ * d.head<3>();
+  const Vec3 dv2 = d.tail<3>() - vv_T_ * dv1;
+  return dv1.norm() + dv2.norm();
+}
+
+Vec6 HcwTransfer::primer_lambda(const Vec6& d) const {
+  const Vec3 dv1 = rv_T_inv_ * d.head<3>();
+  const Vec3 dv2 = d.tail<3>() - vv_T_ * dv1;
+  const Vec3 u1 = unit_or_zero(dv1);
+  const Vec3 u2 = unit_or_zero(dv2);
+  Vec6 lambda;
+  lambda.head<3>() = rv_T_inv_.transpose() * (u1 - vv_T_.transpose() * u2);
+  lambda.tail<3>() = u2;
+  return lambda;
+}
+
+Vec3 HcwTransfer::primer(const Vec6& lambda, double tau_s) const {
+  const HcwBlocks b = hcw_stm_blocks(n_, T_ - tau_s);
+  return b.rv.transpose() * lambda.head<3>() + b.vv.transpose() * lambda.tail<3>();
+}
+
+PrimerBound HcwTransfer::primer_bound(const Vec6& d) const {
+  PrimerBound out;
+  const Vec3 dv1 = rv_T_inv_ * d.head<3>();
+  const Vec3 dv2 = d.tail<3>() - vv_T_ * dv1;
+  out.two_impulse_cost_mps = dv1.norm() + dv2.norm();
+  if (out.two_impulse_cost_mps == 0.0) {
+    out.primer_max = 1.0;
+    out.lower_bound_mps = 0.0;
+    return out;
+  }
+  const Vec3 u1 = unit_or_zero(dv1);
+  const Vec3 u2 = unit_or_zero(dv2);
+  const Vec3 lr = rv_T_inv_.transpose() * (u1 - vv_T_.transpose() * u2);
+  const Vec3& lv = u2;
+  double best2 = -1.0;
+  int best_j = 0;
+  for (int j = 0; j <= kPrimerSamples; ++j) {
+    const Vec3 p = rv_s_[j].transpose() * lr + vv_s_[j].transpose() * lv;
+    const double q = p.squaredNorm();
+    if (q > best2) {
+      best2 = q;
+      best_j = j;
+    }
+  }
+  const double h = T_ / kPrimerSamples;
+  const double sqrt26 = std::sqrt(26.0);
+  const double p2_max = n_ * sqrt26 * lr.norm() + n_ * n_ * sqrt26 * lv.norm();
+  const double margin = h * h / 8.0 * p2_max;
+  // λᵀd = u1ᵀΔv1 + u2ᵀΔv2 = J2; |p(0)| or |p(T)| is 1 unless both impulses vanish.
+  out.primer_max = std::max(1.0, std::sqrt(best2) + margin);
+  out.lower_bound_mps = out.two_impulse_cost_mps / out.primer_max;
+  out.primer_argmax_s = T_ * best_j / kPrimerSamples;
+  return out;
+}
+
+Vec6 HcwTransfer::plan_residual(const RendezvousPlan& plan, const Vec6& d) const {
+  Vec6 sum = Vec6::Zero();
+  for (const Impulse& imp : plan.impulses) {
+    sum += hcw_impulse_response(n_, T_ - imp.t_s, imp.dv_rsw_mps);
+  }
+  return sum - d;
+}
+
+}  // namespace evade::threat
