@@ -1,0 +1,176 @@
+// Unit tests of the guidance_lcm pieces: validation ranges, bit-exact conversion, the seq
+// tracker, the bounded queue's drop-oldest policy and the cycle statistics
+// (design_node.md NODE-IN-2..4, NODE-IF-2, NODE-RT-3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "evade/guidance_lcm/convert.hpp"
+#include "evade/guidance_lcm/cycle_stats.hpp"
+#include "evade/guidance_lcm/input_queue.hpp"
+#include "evade/guidance_lcm/seq_tracker.hpp"
+#include "evade/guidance_lcm/validate.hpp"
+
+namespace evade::guidance_lcm {
+namespace {
+
+evade_angles_t good_angles() {
+  evade_angles_t a{};
+  a.utime = 1;
+  a.valid = true;
+  a.elevation_rad = 0.3;
+  a.azimuth_rad = -2.0;
+  a.sigma_angle_rad = 1e-4;
+  return a;
+}
+
+TEST(Validate, AcceptsGoodAnglesAndTheRangeEnds) {
+  evade_angles_t a = good_angles();
+  EXPECT_EQ(validate(a), Reason::kOk);
+  a.elevation_rad = Limits::kMaxElevationRad;
+  a.azimuth_rad = -Limits::kMaxAzimuthRad;
+  EXPECT_EQ(validate(a), Reason::kOk);
+  a.valid = false;  // "no detection" is well formed: the law decides
+  EXPECT_EQ(validate(a), Reason::kOk);
+}
+
+TEST(Validate, RejectsEachBadAngleField) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  struct Case {
+    void (*mutate)(evade_angles_t&, double);
+    Reason want;
+  } cases[] = {
+      {[](evade_angles_t& a, double n) { a.elevation_rad = n; }, Reason::kNotFinite},
+      {[](evade_angles_t& a, double) { a.azimuth_rad = -INFINITY; }, Reason::kNotFinite},
+      {[](evade_angles_t& a, double n) { a.sigma_angle_rad = n; }, Reason::kNotFinite},
+      {[](evade_angles_t& a, double) { a.elevation_rad = 1.5708; }, Reason::kOutOfRange},
+      {[](evade_angles_t& a, double) { a.azimuth_rad = 6.3; }, Reason::kOutOfRange},
+      {[](evade_angles_t& a, double) { a.sigma_angle_rad = -1e-9; }, Reason::kOutOfRange},
+      {[](evade_angles_t& a, double n) { a.has_rates = true; a.azimuth_rate_radps = n; },
+       Reason::kNotFinite},
+      {[](evade_angles_t& a, double) { a.has_rates = true; a.elevation_rate_radps = 11.0; },
+       Reason::kOutOfRange},
+      {[](evade_angles_t& a, double) { a.has_range = true; a.range_m = 0.0; },
+       Reason::kOutOfRange},
+      {[](evade_angles_t& a, double n) { a.has_range = true; a.range_m = 10.0; a.range_rate_mps = n; },
+       Reason::kNotFinite},
+  };
+  for (const auto& c : cases) {
+    evade_angles_t a = good_angles();
+    c.mutate(a, nan);
+    EXPECT_EQ(validate(a), c.want);
+  }
+  // Rates and range fields are ignored when their flag is clear.
+  evade_angles_t a = good_angles();
+  a.elevation_rate_radps = nan;
+  a.range_m = nan;
+  EXPECT_EQ(validate(a), Reason::kOk);
+}
+
+TEST(Validate, CommandUnitVectorMustBeUnitWhenThrusting) {
+  evade_thrust_cmd_t c{};
+  c.mode = evade_thrust_cmd_t::MODE_EVADE;
+  c.accel_mps2 = 1.0;
+  c.u_eci[0] = 0.6;
+  c.u_eci[1] = 0.8;
+  EXPECT_EQ(validate(c), Reason::kOk);
+  c.u_eci[1] = 0.81;
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+  c.u_eci[0] = c.u_eci[1] = 0.0;
+  c.accel_mps2 = 0.0;
+  EXPECT_EQ(validate(c), Reason::kOk);  // zero thrust, zero direction
+  c.accel_mps2 = -1.0;
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+  c.accel_mps2 = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(validate(c), Reason::kNotFinite);
+  c.accel_mps2 = 0.0;
+  c.mode = 9;
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+}
+
+TEST(Convert, AnglesAndNavRoundTripBitExact) {
+  guidance::AnglesMeasurement m;
+  m.utime_us = 123456789;
+  m.seq = 5;
+  m.elevation_rad = 0.1 + 1e-17;
+  m.azimuth_rad = std::nextafter(1.0, 2.0);
+  m.sigma_rad = 3e-6;
+  m.has_rates = true;
+  m.elevation_rate_radps = 1.234567890123e-9;
+  m.azimuth_rate_radps = -4e-9;
+  m.rate_sigma_radps = 1e-10;
+  m.has_range = true;
+  m.range_m = 10000.000000001;
+  m.range_rate_mps = -6712.4;
+  m.valid = true;
+  evade_angles_t msg{};
+  to_lcm(m, 77, &msg);
+  std::uint8_t buf[512];
+  const int n = msg.encode(buf, 0, sizeof(buf));
+  evade_angles_t back{};
+  ASSERT_EQ(back.decode(buf, 0, n), n);
+  guidance::AnglesMeasurement m2;
+  from_lcm(back, &m2);
+  EXPECT_EQ(m2.utime_us, m.utime_us);
+  EXPECT_EQ(m2.seq, 77);
+  EXPECT_EQ(m2.elevation_rad, m.elevation_rad);
+  EXPECT_EQ(m2.azimuth_rad, m.azimuth_rad);
+  EXPECT_EQ(m2.elevation_rate_radps, m.elevation_rate_radps);
+  EXPECT_EQ(m2.range_m, m.range_m);
+  EXPECT_EQ(m2.range_rate_mps, m.range_rate_mps);
+
+  guidance::NavState nav;
+  nav.utime_us = 42;
+  nav.r_eci_m = Vec3(7.0e6 + 1e-9, -1.0 / 3.0, 2.0);
+  nav.v_eci_mps = Vec3(1.0 / 7.0, 7546.123456789, -0.0);
+  nav.valid = true;
+  evade_nav_state_t nm{};
+  to_lcm(nav, 3, &nm);
+  guidance::NavState nav2;
+  from_lcm(nm, &nav2);
+  EXPECT_EQ(nav2.r_eci_m, nav.r_eci_m);
+  EXPECT_EQ(nav2.v_eci_mps, nav.v_eci_mps);
+  EXPECT_EQ(nav2.utime_us, 42);
+}
+
+TEST(SeqTracker, ClassifiesDuplicateOutOfOrderAndGaps) {
+  SeqTracker s;
+  std::int64_t gaps = -1;
+  EXPECT_EQ(s.check(10, &gaps), Reason::kOk);
+  EXPECT_EQ(gaps, 0);
+  EXPECT_EQ(s.check(10, &gaps), Reason::kDuplicateSeq);
+  EXPECT_EQ(s.check(9, &gaps), Reason::kOutOfOrderSeq);
+  EXPECT_EQ(s.check(11, &gaps), Reason::kOk);
+  EXPECT_EQ(s.check(15, &gaps), Reason::kOk);
+  EXPECT_EQ(gaps, 3);
+  EXPECT_EQ(s.last(), 15);
+}
+
+TEST(InputQueue, DropsOldestWhenFull) {
+  InputQueue q(3);
+  for (std::uint8_t i = 0; i < 5; ++i) {
+    const bool kept = q.push(0, &i, 1);
+    EXPECT_EQ(kept, i < 3);
+  }
+  ASSERT_EQ(q.size(), 3u);
+  for (std::uint8_t want = 2; want < 5; ++want) {
+    EXPECT_EQ(q.front().data[0], want);
+    q.pop();
+  }
+  EXPECT_TRUE(q.empty());
+}
+
+TEST(CycleStats, QuantilesOverTheWindowAndMaxSinceStart) {
+  CycleStats s;
+  s.add(1e6);  // pushed out of the window later, but stays the max
+  for (int i = 1; i <= static_cast<int>(CycleStats::kWindow); ++i) s.add(i);
+  EXPECT_EQ(s.max_us(), 1e6);
+  EXPECT_NEAR(s.quantile(0.5), 512.5, 0.5);
+  EXPECT_NEAR(s.quantile(0.99), 0.99 * 1024, 1.0);
+  EXPECT_EQ(s.quantile(1.0), 1024.0);
+  EXPECT_EQ(s.count(), 1025);
+}
+
+}  // namespace
+}  // namespace evade::guidance_lcm
