@@ -37,7 +37,14 @@ TEST(ObservabilityEstimation, CeresCovarianceEqualsAnalyticOnLinearProblem) {
   const Vec6 x_analytic = p_analytic * (h.transpose() * z / (sigma * sigma) + p0_inv * x_prior);
   // Relative 1e-8: dense SVD of a 6x6 information matrix with condition ~1e6 in double.
   EXPECT_LT((res.cov - p_analytic).norm() / p_analytic.norm(), 1e-8);
-  EXPECT_LT((res.x_hat - x_analytic).norm() / x_analytic.norm(), 1e-8);
+  // The estimate is solver-tolerance limited, not exact: LM stops when the relative cost
+  // decrease falls below function_tolerance = 1e-14, so the excess cost ½ dᵀ I d over the
+  // analytic minimum must be a negligible fraction of the minimum cost (1e-10 allows for
+  // the last accepted steps).
+  const Vec6 d = res.x_hat - x_analytic;
+  const Eigen::VectorXd rm = (h * x_analytic - z) / sigma;
+  const double cost_min = 0.5 * (rm.squaredNorm() + (p0_inv.diagonal().cwiseSqrt().asDiagonal() * (x_analytic - x_prior)).squaredNorm());
+  EXPECT_LT(0.5 * d.dot(info * d), 1e-10 * cost_min);
 }
 
 // Eq. 3 pitch/azimuth of the predicted LOS for state x (frame P), independent of the library.
