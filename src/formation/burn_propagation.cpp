@@ -28,15 +28,17 @@ double tangential_dv_for_delta_a(const StateEci& s, double delta_a_m, double mu)
   return std::sqrt(v2) - v;
 }
 
-StateEci state_from_mean_elements(const MeanElements& m, double mu) {
+StateEci state_from_mean_elements(const MeanElements& m, const EarthModel& earth) {
   OrbitalElements oe;
-  oe.a_m = m.a_m;
+  const double si = std::sin(m.i_rad);
+  oe.a_m = m.a_m + 1.5 * earth.j2 * earth.re_m * earth.re_m / m.a_m * si * si *
+                       std::cos(2.0 * m.arg_lat_rad);
   oe.e = m.e;
   oe.i_rad = m.i_rad;
   oe.raan_rad = wrap_two_pi(m.raan_rad);
   oe.argp_rad = 0.0;
   oe.true_anomaly_rad = wrap_two_pi(m.arg_lat_rad);
-  return state_from_elements(oe, mu);
+  return state_from_elements(oe, earth.mu_m3ps2);
 }
 
 MeanElements osculating_angles(const StateEci& s, double mu) {

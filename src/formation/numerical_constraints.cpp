@@ -51,7 +51,7 @@ FormationPropagator::FormationPropagator(const FormationSpec& spec, const Satell
 
   auto add = [&](const SatelliteId& id) {
     if (unmaneuvered_.count(key(id)) != 0) return;
-    const StateEci s0 = state_from_mean_elements(spec_.sat(id), spec_.earth.mu_m3ps2);
+    const StateEci s0 = state_from_mean_elements(spec_.sat(id), spec_.earth);
     const std::vector<StateEci> st =
         propagate_with_burns(s0, grid_s_, {}, spec_.earth, settings_.integrator);
     Angles a;
@@ -113,7 +113,7 @@ std::vector<double> FormationPropagator::averaged_deviation(const ConstraintDef&
 
 std::vector<DeviationSeries> FormationPropagator::series(const std::vector<TangentialBurn>& burns,
                                                          std::vector<AppliedBurn>* applied) const {
-  const StateEci s0 = state_from_mean_elements(spec_.sat(x_), spec_.earth.mu_m3ps2);
+  const StateEci s0 = state_from_mean_elements(spec_.sat(x_), spec_.earth);
   const std::vector<StateEci> st =
       propagate_with_burns(s0, grid_s_, burns, spec_.earth, settings_.integrator, applied);
   Angles man;
