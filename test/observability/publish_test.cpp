@@ -86,8 +86,17 @@ TEST(ObservabilityPublish, BadObjectiveOrSeedIsAParseError) {
   EXPECT_THROW(run_command({"--seed", "-4"}), CLI::ParseError);
 }
 
-TEST(ObservabilityPublish, ScenarioZeroDvIsInvalidArgument) {
-  EXPECT_THROW(run_command({"--set", "burn.dv_mps=0"}), std::exception);
+TEST(ObservabilityPublish, ScenarioZeroDvIsAConfigErrorNamingTheKey) {
+  try {
+    run_command({"--set", "burn.dv_mps=0"});
+    FAIL() << "no throw";
+  } catch (const evade::config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("burn.dv_mps"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ObservabilityPublish, InvertedBoundsAreInvalidArgument) {
+  EXPECT_THROW(run_command({"--set", "burn.theta_min_rad=-1.0"}), std::invalid_argument);
 }
 
 }  // namespace
