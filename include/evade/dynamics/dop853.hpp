@@ -93,6 +93,11 @@ class Dop853 {
     for (Vector& c : cont_) c = Vector::Zero(x0.size());
     y_ = x0;
     x_new_ = x0;
+    k1_step_ = x0;
+    k13_ = x0;
+    k14_ = x0;
+    k15_ = x0;
+    k16_ = x0;
     stats_ = IntegrationStats{};
     f_now_ = eval(t_, x_);
     h_ = opt_.h_initial_s;
