@@ -1,0 +1,104 @@
+// Conjunction screening cost (issue 6): robust all-pairs screening of seeded synthetic LEO
+// populations over 1 day at a 5 km threshold on 2 threads, and the paper's adaptive step on
+// its own case. Counters: pairs_checked (pairs sharing a grid cell), candidates (boxes
+// overlap and apogee/perigee pass), events (approaches <= 5 km), all_pairs (N(N-1)/2).
+// Run: build-dir/bench/conjunction_bench --benchmark_filter=Screen
+// Results and machine: docs/parts/performance_conjunction.md.
+#include <benchmark/benchmark.h>
+
+#include "evade/conjunction/paper_step.hpp"
+#include "evade/conjunction/population.hpp"
+#include "evade/conjunction/robust_screen.hpp"
+#include "evade/core/elements.hpp"
+
+namespace {
+
+using namespace evade;
+using namespace evade::conjunction;
+
+void screen_population(benchmark::State& state, double span_s) {
+  PopulationOptions pop;
+  pop.count = static_cast<std::size_t>(state.range(0));
+  pop.seed = 2026;
+  pop.span_s = span_s;
+  const auto objects = synthetic_population(pop);
+  ScreenOptions opt;
+  opt.threshold_m = 5000.0;
+  opt.step_s = static_cast<double>(state.range(1));
+  opt.threads = 2;
+  ScreenResult r;
+  for (auto _ : state) {
+    r = screen_robust(objects, span_s, opt);
+    benchmark::DoNotOptimize(r.events.data());
+  }
+  state.counters["pairs_checked"] = static_cast<double>(r.stats.pairs_checked);
+  state.counters["candidates"] = static_cast<double>(r.stats.candidates);
+  state.counters["events"] = static_cast<double>(r.events.size());
+  state.counters["all_pairs"] = static_cast<double>(pop.count) * (pop.count - 1) / 2.0;
+  state.counters["grid_steps"] = static_cast<double>(r.stats.steps);
+}
+
+// 1 day, 5 km, 2 threads; args: N, grid step [s].
+void BM_ScreenOneDay(benchmark::State& state) { screen_population(state, 86400.0); }
+BENCHMARK(BM_ScreenOneDay)
+    ->Args({1000, 60})
+    ->Args({10000, 60})
+    ->Args({20000, 60})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+
+// Growth of the cost with N (1 day would take long for the fit; 2 h keeps it quick).
+void BM_ScreenScaling(benchmark::State& state) { screen_population(state, 7200.0); }
+BENCHMARK(BM_ScreenScaling)
+    ->Args({1000, 60})
+    ->Args({2000, 60})
+    ->Args({4000, 60})
+    ->Args({8000, 60})
+    ->Args({16000, 60})
+    ->Args({32000, 60})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Grid step trade-off at N = 10000 over 2 h.
+void BM_ScreenStep(benchmark::State& state) { screen_population(state, 7200.0); }
+BENCHMARK(BM_ScreenStep)
+    ->Args({10000, 20})
+    ->Args({10000, 30})
+    ->Args({10000, 60})
+    ->Args({10000, 120})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The paper's method on its own 12-hour case (2 objects).
+void BM_PaperSeed2(benchmark::State& state) {
+  EarthModel earth;
+  earth.mu_m3ps2 = 3.986005e14;
+  OrbitalElements oe;
+  std::vector<SpaceObject> objects(2);
+  for (int k = 0; k < 2; ++k) {
+    oe.a_m = 7371000.0;
+    oe.i_rad = kPi / 2.0;
+    oe.raan_rad = (k == 0 ? 70.0 : 250.0) * kDegToRad;
+    objects[k].state = state_from_elements(oe, earth.mu_m3ps2);
+  }
+  objects[0].size_m = 1.0;
+  objects[0].pos_error_m = 0.3;
+  objects[1].size_m = 3.0;
+  objects[1].pos_error_m = 0.5;
+  long steps = 0;
+  for (auto _ : state) {
+    Ephemeris eph(objects, GravityModel::kTwoBody, earth);
+    const PaperResult r = screen_paper(objects, 43200.0, PaperStepParams{}, eph, false);
+    steps = r.steps;
+    benchmark::DoNotOptimize(r.events.data());
+  }
+  state.counters["steps"] = static_cast<double>(steps);
+}
+BENCHMARK(BM_PaperSeed2)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
