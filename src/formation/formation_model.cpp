@@ -149,7 +149,9 @@ double raw_quantity(ConstraintKind kind, const MeanElements& f, const MeanElemen
     case ConstraintKind::kOutOfPlane: {
       const double di = f.i_rad - s.i_rad;
       const double dq = d_raan * std::sin(s.i_rad);
-      return s.a_m * std::sqrt(di * di + dq * dq);
+      // The deputy's cross-track distance from the chief's plane: its own radius times the
+      // angle between the planes (a change of the chief's a does not move the deputy).
+      return f.a_m * std::sqrt(di * di + dq * dq);
     }
     case ConstraintKind::kInPlane:
       return s.a_m * std::abs(wrap_pi(f.arg_lat_rad - s.arg_lat_rad + d_raan * std::cos(s.i_rad)));

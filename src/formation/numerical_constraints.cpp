@@ -79,13 +79,14 @@ std::vector<double> FormationPropagator::averaged_deviation(const ConstraintDef&
                                                             const Angles& second) const {
   const std::size_t n = grid_s_.size();
   // Relative elements per sample, kept continuous.
-  std::vector<double> d_raan(n), d_u(n), d_i(n), a2(n), i2(n);
+  std::vector<double> d_raan(n), d_u(n), d_i(n), a1(n), a2(n), i2(n);
   const double raan_ref = wrap_pi(first.osc[0].raan_rad - second.osc[0].raan_rad);
   const double u_ref = wrap_pi(first.osc[0].arg_lat_rad - second.osc[0].arg_lat_rad);
   for (std::size_t k = 0; k < n; ++k) {
     d_raan[k] = near(first.osc[k].raan_rad - second.osc[k].raan_rad, raan_ref);
     d_u[k] = near(first.osc[k].arg_lat_rad - second.osc[k].arg_lat_rad, u_ref);
     d_i[k] = first.osc[k].i_rad - second.osc[k].i_rad;
+    a1[k] = first.osc[k].a_m;
     a2[k] = second.osc[k].a_m;
     i2[k] = second.osc[k].i_rad;
   }
@@ -101,6 +102,7 @@ std::vector<double> FormationPropagator::averaged_deviation(const ConstraintDef&
     s2.a_m = avg(a2, k);
     s2.i_rad = avg(i2, k);
     MeanElements f = s2;
+    f.a_m = avg(a1, k);
     f.i_rad = s2.i_rad + avg(d_i, k);
     f.raan_rad = avg(d_raan, k);
     f.arg_lat_rad = avg(d_u, k);

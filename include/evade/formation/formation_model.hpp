@@ -7,7 +7,8 @@
 // circular orbits of equal a and i with δΩ = Ω_d - Ω_c, δu = u_d - u_c (the deputy relative
 // to the chief, first order in the differences, chief RSW frame):
 //   along-track  s = a (δu + δΩ cos i)          (constant)
-//   cross-track  w = a (δi sin u - δΩ sin i cos u),  amplitude h = a sqrt(δi² + (δΩ sin i)²)
+//   cross-track  w = a (δi sin u - δΩ sin i cos u),  amplitude h = a_d sqrt(δi² + (δΩ sin i)²)
+//   (a_d: the deputy's semi-major axis — its distance from the chief's plane)
 // so at the equator the three satellites form a triangle of height h, and at the highest
 // latitude they are collinear with the chief–deputy distance |s| (the paper's "minimum
 // inter-satellite distance"). Nominally |s| = L/2 and h = L·sqrt(3)/2 (equilateral
