@@ -283,8 +283,9 @@ ThrustCommand GuidanceLaw::step(const GuidanceInput& in, std::int64_t now_us) no
       tca_estimate_us_ = now_us + static_cast<std::int64_t>(tgo * 1e6);
     }
     if (range_rate_mps_ < 0.0) was_closing_ = true;
-    if (was_closing_ && range_rate_mps_ >= 0.0 && !coast_latched_) {
-      coast_latched_ = true;  // range rate changed sign: closest approach passed
+    if (range_rate_mps_ >= 0.0 && !coast_latched_) {
+      // Range rate changed sign (or the track began receding): closest approach passed.
+      coast_latched_ = true;
       coast_reason_ = CommandReason::kPassedClosestApproach;
     }
   }

@@ -32,7 +32,7 @@
 namespace evade::guidance {
 
 struct LosFilterConfig {
-  double process_noise_radps2 = 1e-4;  ///< sqrt of q, LOS-acceleration PSD [rad/s^2/sqrt(Hz)]
+  double process_noise_radps2 = 1e-2;  ///< sqrt of q, LOS-acceleration PSD [rad/s^2/sqrt(Hz)]
   double init_rate_sigma_radps = 0.05;  ///< initial 1σ of each tangent rate component [rad/s]
   double angle_sigma_floor_rad = 1e-9;  ///< lower bound on a message's angle σ [rad]
   double rate_sigma_floor_radps = 1e-10;  ///< lower bound on a message's rate σ [rad/s]

@@ -1,0 +1,288 @@
+// `evade sim`: closed-loop close-range evasion simulation (paper 000, Yao & Wang 2012, sec. 4
+// and Table 2). Truth two-body + J2, sensor/actuator models and the guidance law behind a
+// GuidanceEndpoint: in-process by default, or evade_guidance_node over LCM with --lcm URL.
+//
+//   evade sim --scenario seed0 --accel 1 --detect 10 --json
+//   evade sim --scenario seed0 --noise-rad 50e-6 --no-rates --runs 200 --seed 7 --json
+//   evade sim --scenario seed0 --csv run.csv --plot run.png
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli.hpp"
+#include "evade/guidance/guidance_law.hpp"
+#include "evade/sim/monte_carlo.hpp"
+#include "evade/sim/sim_scenario.hpp"
+#include "evade/sim/simulator.hpp"
+#include "sim_endpoints.hpp"
+
+// Weak reference: apps/evade/sim_lcm_endpoint.cpp (guidance-lcm) provides the definition.
+// Without it the symbol resolves to null and --lcm reports "not built" (exit 2).
+__attribute__((weak)) std::unique_ptr<evade::sim::GuidanceEndpoint> make_lcm_endpoint(
+    const std::string& lcm_url, bool lockstep, double timeout_s);
+
+namespace {
+
+struct SimOptions {
+  evade::cli::CommonOptions common;
+  double accel_mps2 = NAN;   // NaN = not given (scenario value)
+  double detect_s = NAN;
+  double noise_rad = NAN;
+  double rate_hz = NAN;
+  double rate_noise_radps = NAN;
+  bool no_rates = false;
+  int runs = 0;
+  long long seed = 1;
+  int threads = 2;
+  std::string csv;
+  std::string plot;
+  std::string lcm_url;
+  bool lockstep = true;
+  double lcm_timeout_s = 5.0;
+};
+
+std::string num(double v) {
+  std::ostringstream os;
+  os << std::setprecision(17) << v;
+  return os.str();
+}
+
+// A flag given on the command line becomes a scenario override, so its range is checked with
+// the same rules as the file and it is echoed in "scenario_used". NaN/Inf: exit 2 naming both.
+void override_flag(evade::config::Scenario& sc, const char* flag, const char* key, double v,
+                   bool given) {
+  if (!given) return;
+  if (!std::isfinite(v)) {
+    throw std::invalid_argument(std::string(flag) + " = " + num(v) + " (scenario key " + key +
+                                "): must be a finite number");
+  }
+  sc.apply_override(std::string(key) + "=" + num(v));
+}
+
+bool given(double v) { return !std::isnan(v); }
+
+const char* kCsvHeader =
+    "t_s,sat_x_m,sat_y_m,sat_z_m,sat_vx_mps,sat_vy_mps,sat_vz_mps,deb_x_m,deb_y_m,deb_z_m,"
+    "rel_x_m,rel_y_m,rel_z_m,range_m,range_rate_mps,los_rate_true_radps,zem_true_m,"
+    "e_theta_true_x,e_theta_true_y,e_theta_true_z,has_meas,meas_el_rad,meas_az_rad,"
+    "los_rate_est_radps,los_rate_est_sd_radps,e_theta_est_x,e_theta_est_y,e_theta_est_z,"
+    "mode,reason,cmd_accel_mps2,cmd_dir_x,cmd_dir_y,cmd_dir_z,accel_x_mps2,accel_y_mps2,"
+    "accel_z_mps2,dv_used_mps,fallback";
+
+void write_csv_row(std::ostream& os, const evade::sim::SimSample& s) {
+  const evade::Vec3 rel = s.debris.r_eci_m - s.satellite.r_eci_m;
+  const double zem = (s.range_rate_mps < 0.0)
+                         ? s.range_m * s.range_m * s.los_rate_true_radps / -s.range_rate_mps
+                         : NAN;
+  os << std::setprecision(15) << s.t_s;
+  for (int i = 0; i < 3; ++i) os << ',' << s.satellite.r_eci_m[i];
+  for (int i = 0; i < 3; ++i) os << ',' << s.satellite.v_eci_mps[i];
+  for (int i = 0; i < 3; ++i) os << ',' << s.debris.r_eci_m[i];
+  for (int i = 0; i < 3; ++i) os << ',' << rel[i];
+  os << ',' << s.range_m << ',' << s.range_rate_mps << ',' << s.los_rate_true_radps << ','
+     << zem;
+  for (int i = 0; i < 3; ++i) os << ',' << s.e_theta_true_eci[i];
+  os << ',' << (s.has_measurement ? 1 : 0) << ',' << s.meas.elevation_rad << ','
+     << s.meas.azimuth_rad;
+  os << ',' << s.status.los_rate_radps << ',' << std::sqrt(std::max(s.status.los_rate_var_rad2ps2, 0.0));
+  for (int i = 0; i < 3; ++i) os << ',' << s.status.e_theta_eci[i];
+  os << ',' << evade::guidance::mode_name(s.cmd.mode) << ','
+     << evade::guidance::reason_name(s.cmd.reason) << ',' << s.cmd.accel_mps2;
+  for (int i = 0; i < 3; ++i) os << ',' << s.cmd.dir_eci[i];
+  for (int i = 0; i < 3; ++i) os << ',' << s.accel_applied_eci_mps2[i];
+  os << ',' << s.status.dv_used_mps << ',' << (s.status.fallback_direction ? 1 : 0) << '\n';
+}
+
+std::string script_path(const char* name) {
+  // $EVADE_SCRIPT_DIR, then <scenario dir>/../scripts for every scenario search dir (source
+  // tree: scenarios/ -> scripts/; install tree: share/evade/scenarios -> share/evade/scripts).
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("EVADE_SCRIPT_DIR")) dirs.emplace_back(env);
+  for (const std::string& d : evade::config::scenario_search_dirs()) dirs.push_back(d + "/../scripts");
+  for (const std::string& dir : dirs) {
+    const std::string p = dir + "/" + name;
+    if (std::ifstream(p).good()) return p;
+  }
+  throw std::runtime_error(std::string("scripts/") + name + " not found");
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'') q += "'\\''";
+    else q += c;
+  }
+  return q + "'";
+}
+
+int run_sim(const SimOptions& o) {
+  using namespace evade;
+  config::Scenario sc = cli::load_scenario(o.common);
+  override_flag(sc, "--accel", "guidance.max_accel_mps2", o.accel_mps2, given(o.accel_mps2));
+  override_flag(sc, "--detect", "encounter.detect_before_tca_s", o.detect_s, given(o.detect_s));
+  override_flag(sc, "--noise-rad", "sensor.noise_rad", o.noise_rad, given(o.noise_rad));
+  override_flag(sc, "--rate-hz", "sensor.rate_hz", o.rate_hz, given(o.rate_hz));
+  override_flag(sc, "--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps,
+                given(o.rate_noise_radps));
+  if (o.no_rates) sc.apply_override("sensor.rates=false");
+  if (o.runs < 0 || o.runs > 1000000) {
+    throw std::invalid_argument("--runs = " + std::to_string(o.runs) + " outside [0, 1000000]");
+  }
+  if (o.threads < 1 || o.threads > 64) {
+    throw std::invalid_argument("--threads = " + std::to_string(o.threads) + " outside [1, 64]");
+  }
+  if (o.seed < 0) throw std::invalid_argument("--seed = " + std::to_string(o.seed) + " < 0");
+  if (!std::isfinite(o.lcm_timeout_s) || !(o.lcm_timeout_s > 0.0) || o.lcm_timeout_s > 3600.0) {
+    throw std::invalid_argument("--lcm-timeout-s = " + num(o.lcm_timeout_s) +
+                                " outside (0, 3600]");
+  }
+  if (!o.plot.empty() && o.csv.empty()) {
+    throw std::invalid_argument("--plot needs --csv FILE (the plot is drawn from the CSV)");
+  }
+  sim::SimConfig cfg = sim::sim_config_from_scenario(sc);
+  sc.check_all_used();
+  cfg.validate();
+
+  std::unique_ptr<sim::GuidanceEndpoint> endpoint;
+  if (!o.lcm_url.empty()) {
+    if (make_lcm_endpoint == nullptr) {
+      std::fprintf(stderr,
+                   "evade sim: --lcm not built (apps/evade/sim_lcm_endpoint.cpp is missing)\n");
+      return 2;
+    }
+    endpoint = make_lcm_endpoint(o.lcm_url, o.lockstep, o.lcm_timeout_s);
+  } else {
+    endpoint = sim::make_in_process_endpoint(cfg.guidance, cfg.armed);
+  }
+
+  std::ofstream csv;
+  if (!o.csv.empty()) {
+    csv.open(o.csv);
+    if (!csv) throw std::invalid_argument("--csv = " + o.csv + ": cannot open for writing");
+    csv << kCsvHeader << '\n';
+  }
+  sim::SampleCallback cb;
+  if (csv.is_open()) cb = [&csv](const sim::SimSample& s) { write_csv_row(csv, s); };
+  const sim::SimResult r = sim::run_simulation(cfg, *endpoint, cb);
+  if (csv.is_open()) csv.close();
+  if (!r.closest_approach_found) {
+    std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.max_duration_s);
+    return 1;
+  }
+
+  nlohmann::json j;
+  j["miss_m"] = r.miss_m;
+  j["tca_s"] = r.tca_s;
+  j["dv_mps"] = r.dv_mps;
+  j["burn_s"] = r.burn_s;
+  j["cycles"] = r.cycles;
+  j["start_s"] = r.start_s;
+  j["nominal_tca_s"] = r.nominal_tca_s;
+  j["nominal_miss_m"] = r.nominal_miss_m;
+  j["measurements"] = r.measurements;
+  j["dropouts"] = r.dropouts;
+  j["guidance"] = o.lcm_url.empty() ? "in_process" : "lcm";
+  if (r.has_final_status) {
+    j["final_mode"] = guidance::mode_name(r.final_status.mode);
+    j["final_reason"] = guidance::reason_name(r.final_status.reason);
+    j["guidance_dv_used_mps"] = r.final_status.dv_used_mps;
+    j["meas_accepted"] = r.final_status.meas_accepted;
+    j["meas_rejected"] = r.final_status.meas_rejected;
+    j["filter_reinits"] = r.final_status.filter_reinits;
+  }
+  j["parameters"] = {{"accel_mps2", cfg.guidance.max_accel_mps2},
+                     {"detect_before_tca_s", cfg.detect_before_tca_s},
+                     {"noise_rad", cfg.sensor.noise_rad},
+                     {"sensor_rate_hz", cfg.sensor.rate_hz},
+                     {"sensor_rates", cfg.sensor.provide_rates},
+                     {"rate_noise_radps", cfg.sensor.rate_noise_radps},
+                     {"guidance_rate_hz", cfg.guidance_rate_hz},
+                     {"gravity", cfg.gravity == GravityModel::kTwoBody ? "two_body"
+                                                                      : "two_body_j2"},
+                     {"scenario", sc.source()}};
+
+  if (o.runs > 0) {
+    if (!o.lcm_url.empty()) throw std::invalid_argument("--runs cannot be combined with --lcm");
+    std::mutex mu;
+    auto progress = [&mu](int done, int total) {
+      std::lock_guard<std::mutex> lock(mu);
+      if (done == total || done % std::max(1, total / 20) == 0) {
+        std::fprintf(stderr, "evade sim: monte carlo %d/%d\n", done, total);
+      }
+    };
+    const sim::MonteCarloResult mc = sim::run_monte_carlo(
+        cfg, o.runs, static_cast<std::uint64_t>(o.seed), o.threads, progress);
+    j["runs"] = o.runs;
+    j["seed"] = o.seed;
+    j["miss_m_min"] = mc.miss_min_m;
+    j["miss_m_p5"] = mc.miss_p5_m;
+    j["miss_m_p50"] = mc.miss_p50_m;
+    j["miss_m_p95"] = mc.miss_p95_m;
+    j["miss_m_max"] = mc.miss_max_m;
+    j["miss_m_mean"] = mc.miss_mean_m;
+  }
+  j["scenario_used"] = sc.used();
+
+  if (!o.plot.empty()) {
+    const std::string cmd = "/usr/bin/python3 " + shell_quote(script_path("plot_sim.py")) + " " +
+                            shell_quote(o.csv) + " " + shell_quote(o.plot) + " 1>&2";
+    const int rc = std::system(cmd.c_str());
+    if (rc != 0) {
+      std::fprintf(stderr, "evade sim: plot failed (%s)\n", cmd.c_str());
+      return 1;
+    }
+  }
+
+  if (o.common.json) {
+    cli::print_json(j);
+  } else {
+    std::printf("miss %.4f m at tca %.6f s (nominal miss %.4f m); dv %.4f m/s, burn %.3f s, "
+                "%ld cycles\n",
+                r.miss_m, r.tca_s, r.nominal_miss_m, r.dv_mps, r.burn_s, r.cycles);
+    if (o.runs > 0) {
+      std::printf("monte carlo %d runs: miss p5 %.4f p50 %.4f p95 %.4f (min %.4f max %.4f) m\n",
+                  o.runs, j["miss_m_p5"].get<double>(), j["miss_m_p50"].get<double>(),
+                  j["miss_m_p95"].get<double>(), j["miss_m_min"].get<double>(),
+                  j["miss_m_max"].get<double>());
+    }
+  }
+  return 0;
+}
+
+const bool kRegistered = evade::cli::register_command(
+    {"sim"}, "Closed-loop close-range evasion simulation (paper 000)", [](CLI::App& app) {
+      auto o = std::make_shared<SimOptions>();
+      evade::cli::add_common_options(app, o->common, "seed0");
+      app.add_option("--accel", o->accel_mps2, "maximum acceleration [m/s^2] (guidance.max_accel_mps2)");
+      app.add_option("--detect", o->detect_s,
+                     "detection time before the nominal closest approach [s]");
+      app.add_option("--noise-rad", o->noise_rad, "sensor angle noise 1-sigma [rad]");
+      app.add_option("--rate-hz", o->rate_hz, "sensor sample rate [Hz]");
+      app.add_option("--rate-noise-radps", o->rate_noise_radps,
+                     "sensor angle-rate noise 1-sigma [rad/s]");
+      app.add_flag("--no-rates", o->no_rates, "angles only (the filter estimates the rates)");
+      app.add_option("--runs", o->runs, "Monte Carlo runs (adds miss_m_p5/p50/p95)");
+      app.add_option("--seed", o->seed, "Monte Carlo seed");
+      app.add_option("--threads", o->threads, "Monte Carlo threads")->capture_default_str();
+      app.add_option("--csv", o->csv, "write the time history (truth, estimates, commands)");
+      app.add_option("--plot", o->plot, "draw the CSV with scripts/plot_sim.py into this PNG");
+      app.add_option("--lcm", o->lcm_url,
+                     "run the guidance in evade_guidance_node over LCM at this URL");
+      app.add_option("--lcm-lockstep", o->lockstep, "wait for the node's command every cycle")
+          ->capture_default_str();
+      app.add_option("--lcm-timeout-s", o->lcm_timeout_s, "LCM reply timeout [s]")
+          ->capture_default_str();
+      return [o]() { return run_sim(*o); };
+    });
+
+}  // namespace
