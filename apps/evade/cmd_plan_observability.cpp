@@ -148,6 +148,12 @@ int run(const Options& o) {
                 {"polish", polish_name(io.polish)},
                 {"nlopt_result", res.nlopt_result},
                 {"runtime_s", runtime_s}};
+  // Convergence history: best value (own sense) after every 100th evaluation and the last.
+  nlohmann::json hist = nlohmann::json::array();
+  for (std::size_t i = 0; i < res.history.size(); ++i)
+    if ((i + 1) % 100 == 0 || i + 1 == res.history.size())
+      hist.push_back({{"evaluations", i + 1}, {"best", res.history[i]}});
+  j["history"] = hist;
   j["compare"] = nlohmann::json::array({
       describe("no-burn", s, kind, ec, false, 0.0, 0.0),
       describe("paper-optimum", s, kind, ec, true, paper_eps, paper_theta),
