@@ -44,20 +44,30 @@ StateEci KeplerOrbit::state_at(double dt_s) const {
   double hi = m + 2.0 * e_ + 1e-12;
   double x = m + es_ * 0.0 + (e_ > 0.0 ? ec_ * std::sin(m) - es_ * (1.0 - std::cos(m)) : 0.0);
   if (!(x > lo && x < hi)) x = m;
+  // Newton converges quadratically: once a correction is below 1e-8 rad the next would be
+  // below ~1e-16, so the last correction is applied to (sin, cos) to first order (error
+  // dx^2/2 < 1e-16) instead of paying another sincos.
+  double sd = 0.0;
+  double cd = 1.0;
   for (int it = 0; it < 60; ++it) {
-    const double s = std::sin(x);
-    const double c = std::cos(x);
-    const double f = x - ec_ * s + es_ * (1.0 - c) - m;
+    sd = std::sin(x);
+    cd = std::cos(x);
+    const double f = x - ec_ * sd + es_ * (1.0 - cd) - m;
     if (f > 0.0) hi = x; else lo = x;
-    const double fp = 1.0 - ec_ * c + es_ * s;
+    const double fp = 1.0 - ec_ * cd + es_ * sd;
     double xn = x - f / fp;
-    if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
+    const bool newton = xn >= lo && xn <= hi;  // else bisect (never taken as convergence)
+    if (!newton) xn = 0.5 * (lo + hi);
     const double dx = xn - x;
+    if (newton && std::abs(dx) < 1e-8) {
+      const double s_new = sd + cd * dx;
+      cd = cd - sd * dx;
+      sd = s_new;
+      x = xn;
+      break;
+    }
     x = xn;
-    if (std::abs(dx) <= 1e-15 * (1.0 + std::abs(x))) break;
   }
-  const double sd = std::sin(x);
-  const double cd = std::cos(x);
   const double one_minus_c = 1.0 - cd;
   const double r = a_ + (r0_ - a_) * cd + rdotv_ * sqrt_a_over_mu_ * sd;
   const double f = 1.0 - a_ / r0_ * one_minus_c;

@@ -114,8 +114,34 @@ void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const End
     if (lower_bound > d_ij) continue;
     const double fa = rho_a.dot(vel_a);
     const double fb = rho_b.dot(vel_b);
+    // Test 1 (fast pairs): f' >= V_min^2 - R_max A > 0.
     const double v_min = 0.5 * (vel_a.norm() + vel_b.norm() - acc * len);
-    const bool monotone = v_min > 0.0 && v_min * v_min > r_max * acc;
+    bool monotone = v_min > 0.0 && v_min * v_min > r_max * acc;
+    bool decreasing = false;
+    if (!monotone && r_seg > 0.0) {
+      // Test 2 (slow pairs): f' = |rho'|^2 + rho.rho'' known at both ends, and
+      // |f''| = |3 rho'.rho'' + rho.rho'''| <= B with |rho'''| <= K |rho'| + L |rho| v_max,
+      // L = 24 mu / r^4 (norm of the third derivatives of mu/r) and v_max = sqrt(2 mu / r_min).
+      double l_third = 24.0 * mu / (r_seg * r_seg * r_seg * r_seg);
+      double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
+      if (j2) {
+        const double q = opt.earth.re_m / r_seg;
+        l_third *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
+        k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
+      }
+      const double v_obj = std::sqrt(2.0 * mu / r_min);
+      const double v_rel_max = std::min(vel_a.norm(), vel_b.norm()) + acc * len;
+      const double b_f2 = 3.0 * v_rel_max * acc + r_max * (k_grad * v_rel_max + l_third * r_max * v_obj);
+      auto accel = [&](const Vec3& r) { return accel_eci_mps2(r, opt.gravity, opt.earth); };
+      const double dfa = vel_a.squaredNorm() + rho_a.dot(accel(a.sj.r_eci_m) - accel(a.si.r_eci_m));
+      const double dfb = vel_b.squaredNorm() + rho_b.dot(accel(b.sj.r_eci_m) - accel(b.si.r_eci_m));
+      const double slack = b_f2 * len;
+      // On [a, b]: f'(t) >= max(f'(a) - B (t-a), f'(b) - B (b-t)) >= (f'(a) + f'(b) - B len)/2
+      // and f'(t) <= (f'(a) + f'(b) + B len)/2.
+      monotone = dfa + dfb - slack > 0.0;
+      decreasing = dfa + dfb + slack < 0.0;
+    }
+    if (decreasing) continue;  // f strictly decreasing: no - to + root, no closest approach
     if (!monotone && len > opt.leaf_s) {
       const double tm = a.t + 0.5 * len;
       Endpoint m = state_pair(tm);

@@ -2,6 +2,8 @@
 // formulation, so they agree to rounding (1e-6 m over a week at 7000 km: ~1e-13 relative).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "evade/conjunction/kepler_orbit.hpp"
 #include "evade/core/elements.hpp"
 #include "evade/dynamics/kepler_propagator.hpp"
@@ -28,6 +30,24 @@ TEST(KeplerOrbit, MatchesFoundationPropagator) {
       EXPECT_LT((a.v_eci_mps - b.v_eci_mps).norm(), 1e-8) << "e " << e << " dt " << dt;
     }
   }
+}
+
+TEST(KeplerOrbit, DenseSweepNearCircularHasNoOutliers) {
+  // A converged first guess once made the bracketed Newton fall back to bisection and stop
+  // 1e-8 rad (cm) away; a dense sweep of times catches such isolated outliers.
+  const double mu = 3.986004418e14;
+  OrbitalElements oe;
+  oe.a_m = 6.95e6;
+  oe.e = 0.0016;
+  oe.i_rad = 0.9;
+  oe.argp_rad = 1.0;
+  const StateEci s0 = state_from_elements(oe, mu);
+  const KeplerOrbit orb(s0, mu);
+  double worst_m = 0.0;
+  for (double t = 0.0; t < 20000.0; t += 0.37) {
+    worst_m = std::max(worst_m, (orb.state_at(t).r_eci_m - propagate_kepler(s0, t, mu).r_eci_m).norm());
+  }
+  EXPECT_LT(worst_m, 1e-6);
 }
 
 }  // namespace
