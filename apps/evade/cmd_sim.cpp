@@ -35,11 +35,13 @@ namespace {
 
 struct SimOptions {
   evade::cli::CommonOptions common;
-  double accel_mps2 = NAN;   // NaN = not given (scenario value)
-  double detect_s = NAN;
-  double noise_rad = NAN;
-  double rate_hz = NAN;
-  double rate_noise_radps = NAN;
+  // Numeric flags are kept as text (empty = not given) and parsed here, so that "nan" or
+  // "inf" is reported with the flag's name instead of silently meaning "not given".
+  std::string accel_mps2;
+  std::string detect_s;
+  std::string noise_rad;
+  std::string rate_hz;
+  std::string rate_noise_radps;
   bool no_rates = false;
   int runs = 0;
   long long seed = 1;
@@ -58,18 +60,24 @@ std::string num(double v) {
 }
 
 // A flag given on the command line becomes a scenario override, so its range is checked with
-// the same rules as the file and it is echoed in "scenario_used". NaN/Inf: exit 2 naming both.
-void override_flag(evade::config::Scenario& sc, const char* flag, const char* key, double v,
-                   bool given) {
-  if (!given) return;
-  if (!std::isfinite(v)) {
-    throw std::invalid_argument(std::string(flag) + " = " + num(v) + " (scenario key " + key +
+// the same rules as the file and it is echoed in "scenario_used". NaN/Inf or text that is
+// not a number: exit 2 naming the flag and the key.
+void override_flag(evade::config::Scenario& sc, const char* flag, const char* key,
+                   const std::string& text) {
+  if (text.empty()) return;
+  double v = NAN;
+  std::size_t used = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !std::isfinite(v)) {
+    throw std::invalid_argument(std::string(flag) + " = '" + text + "' (scenario key " + key +
                                 "): must be a finite number");
   }
   sc.apply_override(std::string(key) + "=" + num(v));
 }
-
-bool given(double v) { return !std::isnan(v); }
 
 const char* kCsvHeader =
     "t_s,sat_x_m,sat_y_m,sat_z_m,sat_vx_mps,sat_vy_mps,sat_vz_mps,deb_x_m,deb_y_m,deb_z_m,"
@@ -128,12 +136,11 @@ std::string shell_quote(const std::string& s) {
 int run_sim(const SimOptions& o) {
   using namespace evade;
   config::Scenario sc = cli::load_scenario(o.common);
-  override_flag(sc, "--accel", "guidance.max_accel_mps2", o.accel_mps2, given(o.accel_mps2));
-  override_flag(sc, "--detect", "encounter.detect_before_tca_s", o.detect_s, given(o.detect_s));
-  override_flag(sc, "--noise-rad", "sensor.noise_rad", o.noise_rad, given(o.noise_rad));
-  override_flag(sc, "--rate-hz", "sensor.rate_hz", o.rate_hz, given(o.rate_hz));
-  override_flag(sc, "--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps,
-                given(o.rate_noise_radps));
+  override_flag(sc, "--accel", "guidance.max_accel_mps2", o.accel_mps2);
+  override_flag(sc, "--detect", "encounter.detect_before_tca_s", o.detect_s);
+  override_flag(sc, "--noise-rad", "sensor.noise_rad", o.noise_rad);
+  override_flag(sc, "--rate-hz", "sensor.rate_hz", o.rate_hz);
+  override_flag(sc, "--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps);
   if (o.no_rates) sc.apply_override("sensor.rates=false");
   if (o.runs < 0 || o.runs > 1000000) {
     throw std::invalid_argument("--runs = " + std::to_string(o.runs) + " outside [0, 1000000]");

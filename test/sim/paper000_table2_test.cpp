@@ -1,13 +1,16 @@
 // Paper 000 (Yao & Wang 2012) Table 2: miss distance for detection 10/20/30 s before the
 // collision and maximum acceleration 0.5/1/1.5/2 m/s², reproduced with the closed-loop
-// simulator (truth two-body + J2, ideal sensor: noise-free angles + true rates at 50 Hz,
-// guidance at 50 Hz, thrust along −e_θ with the zenith convention).
+// simulator (truth two-body + J2, ideal sensor: noise-free angles + true rates, thrust along
+// −e_θ with the zenith convention).
 //
-// Tolerance 2 cm: Table 1 prints positions to 1 mm and velocities to 1 mm/s. A velocity
-// rounding error δv ≤ 0.5 mm/s per axis shifts the relative position at the encounter by up
-// to δv·t_go ≈ 0.5 mm/s × 30 s = 15 mm, and the position rounding by ≤ 0.9 mm; the
-// unforced miss itself (≈ 1.4 mm) is of the same order. So our miss can differ from the
-// paper's by about ±1–2 cm from the printed inputs alone (README: "±1 cm honest tolerance").
+// Tolerance: Table 1 prints positions to 1 mm and velocities to 1 mm/s. A velocity rounding
+// error δv ≤ 0.5 mm/s per axis shifts the relative position at the encounter by up to
+// δv·t_go ≈ 0.5 mm/s × 30 s ≈ 15 mm, the position rounding by ≤ 0.9 mm; the unforced miss
+// itself is 1.35 mm. So the printed inputs alone allow ±1 cm (README: "±1 cm honest
+// tolerance"). The paper thrusts continuously; we run the guidance at 1000 Hz to approximate
+// that (1 cm). At the flight rate of 50 Hz the zero-order hold lags the rotating −e_θ by up
+// to half a cycle, which costs up to +16 mm at 30 s / 2 m/s² (measured: 899.8047 m at 50 Hz,
+// 899.7932 m at 200 Hz, 899.7908 m at 1000 Hz); that case keeps the brief's 2 cm bound.
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -32,9 +35,13 @@ constexpr Entry kTable2[] = {
     {10, 2.0, 100.0001}, {20, 2.0, 399.9614}, {30, 2.0, 899.7888},
 };
 
-TEST(Paper000Table2, AllTwelveMissDistancesWithinTwoCentimetres) {
+void run_table(double rate_hz, double tol_m) {
   const auto sc = evade::config::Scenario::load("seed0");
-  const evade::sim::SimConfig base = evade::sim::sim_config_from_scenario(sc);
+  evade::sim::SimConfig base = evade::sim::sim_config_from_scenario(sc);
+  base.guidance_rate_hz = rate_hz;
+  base.sensor.rate_hz = rate_hz;
+  base.guidance.nominal_cycle_s = 1.0 / rate_hz;
+  std::printf("guidance at %.0f Hz\n", rate_hz);
   std::printf("detect_s accel_mps2   paper_m       ours_m      diff_mm  dv_mps\n");
   for (const Entry& e : kTable2) {
     evade::sim::SimConfig c = base;
@@ -45,11 +52,20 @@ TEST(Paper000Table2, AllTwelveMissDistancesWithinTwoCentimetres) {
     ASSERT_TRUE(r.closest_approach_found);
     std::printf("%8.0f %10.1f %10.4f %12.4f %10.2f %7.3f\n", e.detect_s, e.accel_mps2,
                 e.paper_miss_m, r.miss_m, 1e3 * (r.miss_m - e.paper_miss_m), r.dv_mps);
-    EXPECT_NEAR(r.miss_m, e.paper_miss_m, 0.02)
+    EXPECT_NEAR(r.miss_m, e.paper_miss_m, tol_m)
         << "detect " << e.detect_s << " s, accel " << e.accel_mps2 << " m/s^2";
-    // Continuous thrust at the maximum acceleration from detection to the encounter.
-    EXPECT_NEAR(r.dv_mps, e.accel_mps2 * e.detect_s, 0.02 * e.accel_mps2 + 1e-9);
+    // Continuous thrust at the maximum acceleration from detection to the encounter (the
+    // thrust ends at the actual closest approach, up to 1.6 ms before the nominal one).
+    EXPECT_NEAR(r.dv_mps, e.accel_mps2 * e.detect_s, 0.002 * e.accel_mps2 + 1e-9);
   }
+}
+
+TEST(Paper000Table2, AllTwelveMissDistancesWithinOneCentimetreWithNearContinuousGuidance) {
+  run_table(1000.0, 0.01);
+}
+
+TEST(Paper000Table2, AllTwelveMissDistancesWithinTwoCentimetresAtFlightRate50Hz) {
+  run_table(50.0, 0.02);
 }
 
 TEST(Paper000Table2, UnforcedEncounterIsTenSecondsAheadWithMillimetreMiss) {
