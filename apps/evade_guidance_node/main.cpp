@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   node::add_options(app, opts);
   try {
     app.parse(argc, argv);
+    node::note_given(app, opts);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
@@ -124,6 +125,12 @@ int main(int argc, char** argv) {
                      {"rejected", c.rejected},     {"stale", c.stale},
                      {"superseded", c.superseded}, {"dropped", c.dropped},
                      {"seq_gaps", c.seq_gaps}};
+      nlohmann::json reasons = nlohmann::json::object();
+      for (int r = 1; r < static_cast<int>(guidance_lcm::Reason::kCount); ++r) {
+        if (c.by_reason[r] != 0)
+          reasons[guidance_lcm::reason_name(static_cast<guidance_lcm::Reason>(r))] = c.by_reason[r];
+      }
+      j["inputs"]["by_reason"] = reasons;
       j["watchdog_cycles"] = nodecore.watchdog_cycles();
       j["compute_us"] = {{"p50_last_1024", cs.quantile(0.5)},
                          {"p99_last_1024", cs.quantile(0.99)},

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "evade/config/scenario.hpp"
+#include "evade/sim/sim_scenario.hpp"
 
 namespace evade::node {
 
@@ -23,6 +24,10 @@ void add_options(CLI::App& app, NodeOptions& o) {
   app.add_option("--max-accel-mps2", o.max_accel_mps2, "maximum acceleration [m/s^2]")
       ->capture_default_str();
   app.add_option("--config", o.config, "optional YAML with guidance.* and node.* keys");
+  app.add_option("--scenario", o.scenario,
+                 "take the guidance parameters (guidance.*) from this sim scenario, exactly as "
+                 "`evade sim` does (flags given explicitly still win)");
+  app.add_option("--set", o.sets, "override a scenario key: --set key.path=value (repeatable)");
   app.add_option("--max-cycles", o.max_cycles, "stop after N cycles (0 = until SIGINT/SIGTERM)");
   app.add_option("--idle-exit-s", o.idle_exit_s,
                  "lockstep: exit after this long without a tick (0 = never)");
@@ -33,6 +38,12 @@ void add_options(CLI::App& app, NodeOptions& o) {
       ->capture_default_str();
   app.add_flag("--stats-json", o.stats_json, "print run statistics as JSON on stdout at exit");
   app.add_flag("--quiet", o.quiet, "no progress messages on stderr");
+}
+
+void note_given(const CLI::App& app, NodeOptions& o) {
+  o.rate_given = app.count("--rate-hz") > 0;
+  o.stale_given = app.count("--stale-ms") > 0;
+  o.accel_given = app.count("--max-accel-mps2") > 0;
 }
 
 namespace {
@@ -66,6 +77,17 @@ guidance_lcm::NodeConfig make_node_config(const NodeOptions& o) {
   c.status_divider = o.status_divider;
   c.queue_capacity = o.queue_capacity;
 
+  if (!o.scenario.empty()) {
+    config::Scenario sc = config::Scenario::load(o.scenario);
+    for (const auto& a : o.sets) sc.apply_override(a);
+    const sim::SimConfig simc = sim::sim_config_from_scenario(sc);
+    c.guidance = simc.guidance;
+    c.armed = simc.armed && !o.start_disarmed;
+    c.stale_limit_s = simc.guidance.stale_limit_s;
+    if (o.accel_given) c.guidance.max_accel_mps2 = o.max_accel_mps2;
+    if (o.stale_given) c.guidance.stale_limit_s = c.stale_limit_s = o.stale_ms * 1e-3;
+    if (o.rate_given) c.guidance.nominal_cycle_s = 1.0 / o.rate_hz;
+  }
   if (!o.config.empty()) {
     const config::Scenario s = config::Scenario::load(o.config);
     auto& g = c.guidance;

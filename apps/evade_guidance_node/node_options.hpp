@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -20,6 +21,9 @@ struct NodeOptions {
   double stale_ms = 500.0;        ///< input stale limit [ms]
   double max_accel_mps2 = 1.0;    ///< maximum commanded acceleration [m/s^2]
   std::string config;             ///< optional YAML (guidance.* and node.* keys)
+  std::string scenario;           ///< optional sim scenario: guidance.* read as `evade sim` does
+  std::vector<std::string> sets;  ///< key=value overrides of the scenario
+  bool rate_given = false, stale_given = false, accel_given = false;  ///< set after parsing
   std::int64_t max_cycles = 0;    ///< stop after N cycles (0 = run until signalled)
   double idle_exit_s = 0.0;       ///< lockstep: exit 0 after this long without a tick (0 = never)
   bool start_disarmed = false;    ///< start disarmed (evade_arm_t arms)
@@ -31,6 +35,8 @@ struct NodeOptions {
 
 /// Registers the flags on app.
 void add_options(CLI::App& app, NodeOptions& o);
+/// Records which flags were given explicitly (call after app.parse()).
+void note_given(const CLI::App& app, NodeOptions& o);
 /// Builds the node configuration from the options and the optional YAML file. Throws
 /// config::ConfigError or std::invalid_argument with the key, value and allowed range.
 guidance_lcm::NodeConfig make_node_config(const NodeOptions& o);

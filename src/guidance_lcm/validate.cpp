@@ -33,7 +33,8 @@ Reason validate(const evade_angles_t& m) noexcept {
     return Reason::kOutOfRange;
   if (m.has_rates &&
       (!within(m.elevation_rate_radps, -Limits::kMaxAngleRateRadps, Limits::kMaxAngleRateRadps) ||
-       !within(m.azimuth_rate_radps, -Limits::kMaxAngleRateRadps, Limits::kMaxAngleRateRadps) ||
+       !within(m.azimuth_rate_radps * std::cos(m.elevation_rad), -Limits::kMaxAngleRateRadps,
+               Limits::kMaxAngleRateRadps) ||
        !(m.sigma_rate_radps >= 0.0 && m.sigma_rate_radps <= Limits::kMaxAngleRateRadps)))
     return Reason::kOutOfRange;
   if (m.has_range &&

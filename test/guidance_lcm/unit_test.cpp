@@ -49,7 +49,7 @@ TEST(Validate, RejectsEachBadAngleField) {
       {[](evade_angles_t& a, double) { a.sigma_angle_rad = -1e-9; }, Reason::kOutOfRange},
       {[](evade_angles_t& a, double n) { a.has_rates = true; a.azimuth_rate_radps = n; },
        Reason::kNotFinite},
-      {[](evade_angles_t& a, double) { a.has_rates = true; a.elevation_rate_radps = 11.0; },
+      {[](evade_angles_t& a, double) { a.has_rates = true; a.elevation_rate_radps = 2e6; },
        Reason::kOutOfRange},
       {[](evade_angles_t& a, double) { a.has_range = true; a.range_m = 0.0; },
        Reason::kOutOfRange},

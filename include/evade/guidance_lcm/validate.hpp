@@ -19,7 +19,9 @@ struct Limits {
   static constexpr double kMinAzimuthRad = -6.283185307179586;    // -2 pi
   static constexpr double kMaxAzimuthRad = 6.283185307179586;     // 2 pi
   static constexpr double kMaxSigmaAngleRad = 0.5;                // a 30 deg 1-sigma is no data
-  static constexpr double kMaxAngleRateRadps = 10.0;
+  // LOS rates reach V/r: 15 km/s at 1.5 cm is 1e6 rad/s, beyond any real encounter. The
+  // azimuth rate is bounded through beta_dot cos(eps) (beta_dot alone is unbounded at the pole).
+  static constexpr double kMaxAngleRateRadps = 1.0e6;
   static constexpr double kMaxRangeM = 1.0e8;
   static constexpr double kMaxRangeRateMps = 1.0e5;
   static constexpr double kMaxPositionM = 1.0e9;
