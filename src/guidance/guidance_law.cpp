@@ -198,6 +198,14 @@ ThrustCommand GuidanceLaw::step(const GuidanceInput& in, std::int64_t now_us) no
         have_tca_estimate_ = false;
         was_closing_ = false;
       }
+      // Angles-only closest-approach test on the raw measurement (independent of the filter,
+      // which may be gating measurements while the LOS whips round at the encounter): the
+      // measured LOS has swung by more than 90° from its direction when EVADE began.
+      if (evade_started_ && !coast_latched_ &&
+          los_unit_from_angles(m.elevation_rad, m.azimuth_rad).dot(u_at_evade_start_eci_) < 0.0) {
+        coast_latched_ = true;
+        coast_reason_ = CommandReason::kPassedClosestApproach;
+      }
       const LosUpdateResult r = filter_.update(lm);
       if (m.has_range && r != LosUpdateResult::kRejected && r != LosUpdateResult::kOutOfOrder) {
         have_range_ = true;

@@ -12,7 +12,8 @@
 //            tracked threat is always evaded (the paper's simulation: thrust from detection).
 //   COAST    after the closest approach — range rate turned positive (range known), or the
 //            LOS has swung by more than 90° from its direction when EVADE began (angles
-//            only; at a near-collision the LOS flips at the encounter), or t_go has elapsed
+//            only, tested on the filtered LOS and on each raw measurement; at a near-collision
+//            the LOS flips at the encounter), or t_go has elapsed
 //            — or when the Δv budget or the burn-time limit is used up. Zero thrust. Latched
 //            until the track is lost/re-initialised or reset().
 //   SAFE     invalid or stale inputs: navigation invalid, non-finite or older than

@@ -39,7 +39,7 @@ struct LosFilterConfig {
   double gate_chi2_2dof = 13.82;  ///< gate for angles only (chi-square 2 dof, p = 0.999)
   double gate_chi2_4dof = 18.47;  ///< gate for angles + rates (chi-square 4 dof, p = 0.999)
   double reinit_gap_s = 2.0;       ///< re-initialise after this long without an update [s]
-  int max_consecutive_rejects = 25;  ///< re-initialise after this many rejections in a row
+  int max_consecutive_rejects = 5;  ///< re-initialise after this many rejections in a row
 };
 
 /// One measurement in the filter's terms (the guidance law converts AnglesMeasurement).
