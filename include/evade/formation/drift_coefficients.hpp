@@ -35,8 +35,8 @@ struct DriftCoefficients {
   double k_am_m_per_m_day = 0.0;       ///< a K_φ [m / (m day)]
 };
 
-/// Throws std::invalid_argument for a non-finite input, a_m <= re_m... (a_m must exceed the
-/// Earth radius), e outside [0, 1) or i outside [0, pi].
+/// Coefficients at (a_m, e, i_rad). Throws std::invalid_argument naming the argument for a
+/// non-finite input, a_m <= earth.re_m, e outside [0, 1) or i_rad outside [0, pi].
 DriftCoefficients drift_coefficients(double a_m, double e, double i_rad,
                                      const EarthModel& earth = kEarthDefault);
 
