@@ -4,7 +4,7 @@
 //  * two-body acceleration, eq. 1-14: a = -mu r / r^3;
 //  * J2 acceleration in Cartesian ECI form, eq. 8-30;
 //  * secular rates, eq. 9-41 (RAAN), 9-42 (argument of perigee) and the mean-anomaly rate
-//    n_bar = n (1 + 3/4 J2 (Re/p)^2 sqrt(1-e^2) (2 - 3 sin^2 i)) (eq. 9-43 form, with
+//    n_bar = n (1 + 3/4 J2 (Re/p)^2 sqrt(1-e^2) (2 - 3 sin^2 i)) (with
 //    2 - 3 sin^2 i = (3 cos^2 i - 1)).
 #include "evade/dynamics/gravity.hpp"
 

@@ -1,7 +1,7 @@
 // Hill–Clohessy–Wiltshire state-transition matrix in closed form.
 //
 // Reference: Clohessy & Wiltshire, J. Aerospace Sci. 27(9), 1960; Vallado 4th ed. eq. 6-66
-// (solution of the HCW equations eq. 6-65), written in RSW (x radial, y along track,
+// (solution of the HCW equations), written in RSW (x radial, y along track,
 // z normal). With c = cos nt, s = sin nt:
 //   x(t)  = (4-3c) x0 + s/n xd0 + 2(1-c)/n yd0
 //   y(t)  = 6(s-nt) x0 + y0 - 2(1-c)/n xd0 + (4s-3nt)/n yd0

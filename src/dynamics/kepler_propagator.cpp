@@ -1,7 +1,7 @@
 // Analytic two-body propagation with Lagrange f and g functions in the eccentric anomaly.
 //
-// Reference: Vallado 4th ed. sec. 2.3 (f and g functions, eq. 2-67..2-69 in E form) and
-// Battin, "An Introduction to the Mathematics and Methods of Astrodynamics", eq. 4.40–4.42.
+// Reference: Vallado 4th ed. sec. 2.3 (f and g functions) and Battin, "An Introduction to
+// the Mathematics and Methods of Astrodynamics", ch. 4 (f and g in the eccentric anomaly).
 // The change of eccentric anomaly dE over dt solves Kepler's equation written relative to
 // the initial state (no elements, so circular and equatorial orbits are not singular):
 //   n dt = dE - (e cos E0) sin dE + (e sin E0)(1 - cos dE),                        (K)

@@ -2,8 +2,8 @@
 // 7th-order dense output.
 //
 // Reference: Hairer, Nørsett & Wanner, "Solving Ordinary Differential Equations I", 2nd ed.
-// (1993), sec. II.10 (method, eq. 10.10 embedded estimators), sec. II.4 (step-size control,
-// eq. 4.12–4.13 and the initial step-size algorithm), sec. II.6 (dense output); and
+// (1993), sec. II.10 (the method and its 5th/3rd-order embedded error estimators), sec. II.4
+// (automatic step-size control and the starting step size), sec. II.6 (dense output); and
 // Hairer's Fortran dop853.f, whose control we reproduce exactly:
 //   sk_i  = abs_tol + rel_tol * max(|x_i|, |x_new_i|)
 //   err5  = sum_i ((sum_j er_j k_j,i) / sk_i)^2,  err3 = sum_i ((sum_j (b_j - bhh_j) k_j,i)/sk_i)^2
