@@ -194,7 +194,17 @@ LosUpdateResult LosRateFilter::update(const LosMeasurement& m) noexcept {
     ++rejected_;
     ++consecutive_rejects_;
     if (consecutive_rejects_ >= cfg_.max_consecutive_rejects) {
-      initialize(m);  // the track no longer explains the data: start again from it
+      // The track no longer explains the data (typically the LOS accelerating at the
+      // encounter faster than the constant-rate model allows): restart from this measurement.
+      // Without measured rates, keep the predicted rate as the prior (a rate is known to
+      // exist; zero would be worse) with a 1σ as large as the rate itself.
+      initialize(m);
+      if (!m.has_rates) {
+        const Mat3 pi = tangent_projector(u_);
+        u_dot_ = pi * ud;
+        const double sr = std::max(cfg_.init_rate_sigma_radps, u_dot_.norm());
+        P_.bottomRightCorner<3, 3>() = sr * sr * pi;
+      }
       return LosUpdateResult::kInitialized;
     }
     return LosUpdateResult::kRejected;
