@@ -68,8 +68,9 @@ PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
   if (n < 2) return res;
   // Per pair: the best warning sample of the current encounter not yet reported.
   struct Pending {
-    bool active = false;
-    bool collided = false;
+    bool active = false;        // approach phase with a warning sample
+    bool collided = false;      // a collision was flagged in this approach phase
+    bool in_collision = false;  // the previous sample was a collision sample
     Conjunction best;
   };
   std::vector<Pending> pending(n * (n - 1) / 2);
@@ -91,19 +92,23 @@ PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
         const double h_pair = paper_next_step_s(p, h_now, prm);
         Pending& pd = pending[pair_index(i, j)];
         Conjunction c{i, j, t, p.distance_m, p.rel_speed_mps, p.collision, p.warning};
-        if (p.collision) {
+        // One event per run of consecutive collision samples (the paper's flag), and one
+        // per approach phase that entered the warning radius without a collision sample.
+        if (p.collision && !pd.in_collision) {
           res.events.push_back(c);
           pd.collided = true;
         }
-        if (p.warning && !p.collision) {
+        pd.in_collision = p.collision;
+        const bool approaching = p.radial_speed_mps < 0.0;
+        if (p.warning && !p.collision && (approaching || pd.active)) {
           if (!pd.active || p.distance_m < pd.best.miss_m) pd.best = c;
           pd.active = true;
         }
-        if (pd.active && !(p.radial_speed_mps < 0.0)) {  // encounter over
-          if (!pd.collided) res.events.push_back(pd.best);
+        if (!approaching) {  // the approach phase (if any) is over
+          if (pd.active && !pd.collided) res.events.push_back(pd.best);
+          const bool in_collision = pd.in_collision;
           pd = Pending{};
-        } else if (!pd.active && !(p.radial_speed_mps < 0.0)) {
-          pd.collided = false;
+          pd.in_collision = in_collision;
         }
         if (first || h_pair < h_next || (h_pair == h_next && p.distance_m < row.distance_m)) {
           h_next = std::min(h_next, h_pair);
