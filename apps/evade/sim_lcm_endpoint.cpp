@@ -5,11 +5,16 @@
 // returns it, so the run is deterministic and equals the in-process run bit for bit
 // (design_node.md NODE-LS-1). Commands are validated before use (NODE-IN-2): a malformed
 // command is an error, never thrust.
+// Pacing: a lockstep run goes as fast as the node answers (~10^4 messages/s), which is more
+// than lcm-logger can record without losing datagrams. For a recorded HIL run, set
+// EVADE_SIM_LCM_REALTIME_FACTOR=F (> 0): tick k is then sent no earlier than k*dt/F of wall
+// time after the first (F = 1: real time). Unset: unpaced.
 #include <time.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -43,6 +48,13 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
         lockstep_(lockstep),
         timeout_us_(static_cast<std::int64_t>(timeout_s * 1e6)) {
     if (lcm_ == nullptr) throw std::runtime_error("evade sim: cannot open LCM URL '" + url + "'");
+    if (const char* f = std::getenv("EVADE_SIM_LCM_REALTIME_FACTOR")) {
+      char* end = nullptr;
+      pace_factor_ = std::strtod(f, &end);
+      if (end == f || *end != '\0' || !(pace_factor_ > 0.0) || !(pace_factor_ <= 1e6))
+        throw std::invalid_argument(std::string("EVADE_SIM_LCM_REALTIME_FACTOR = '") + f +
+                                    "': must be a number in (0, 1e6]");
+    }
     nav_pub_ = std::make_unique<RawPublisher<evade_nav_state_t>>(lcm_, kChanNav);
     ang_pub_ = std::make_unique<RawPublisher<evade_angles_t>>(lcm_, kChanAngles);
     clk_pub_ = std::make_unique<RawPublisher<evade_sim_clock_t>>(lcm_, kChanClock);
@@ -64,6 +76,7 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
     if (have_meas_) to_lcm(*meas, ++ang_seq_, &ang_msg_);
     clk_msg_.utime = utime_us;
     clk_msg_.seq = ++clk_seq_;
+    pace(utime_us);
     send_cycle();
     if (!lockstep_) {
       handle_ready();
@@ -111,6 +124,24 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
   }
 
  private:
+  void pace(std::int64_t utime_us) {
+    if (pace_factor_ <= 0.0) return;
+    if (!paced_once_) {
+      paced_once_ = true;
+      pace_wall0_us_ = mono_us();
+      pace_sim0_us_ = utime_us;
+      return;
+    }
+    const std::int64_t due = pace_wall0_us_ + static_cast<std::int64_t>(
+        static_cast<double>(utime_us - pace_sim0_us_) / pace_factor_);
+    const std::int64_t now = mono_us();
+    if (due > now) {
+      timespec ts{};
+      ts.tv_sec = static_cast<time_t>((due - now) / 1000000);
+      ts.tv_nsec = static_cast<long>((due - now) % 1000000) * 1000;
+      nanosleep(&ts, nullptr);
+    }
+  }
   void send_cycle() {
     nav_pub_->publish(nav_msg_);
     if (have_meas_) ang_pub_->publish(ang_msg_);
@@ -177,6 +208,10 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
   bool have_status_ = false;
   bool status_every_cycle_ = true;
   long bad_cmds_ = 0;
+  double pace_factor_ = 0.0;  // 0: unpaced
+  bool paced_once_ = false;
+  std::int64_t pace_wall0_us_ = 0;
+  std::int64_t pace_sim0_us_ = 0;
 };
 
 }  // namespace
