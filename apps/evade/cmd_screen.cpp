@@ -73,7 +73,7 @@ int run(const Options& o) {
   prm.validate();
   ScreenOptions so;
   so.threshold_m = sc.get_double("robust.threshold_m", 0.0, 1e8, so.threshold_m);
-  so.step_s = sc.get_double("robust.step_s", 1e-3, 1e5, so.step_s);
+  so.step_s = sc.get_double("robust.step_s", 0.0, 1e5, so.step_s);  // 0 = auto
   so.leaf_s = sc.get_double("robust.leaf_s", 1e-6, 1e5, so.leaf_s);
   so.warning_multiple = prm.n_warning;
   so.gravity = gravity;
@@ -145,7 +145,8 @@ int run(const Options& o) {
     if (o.trace) throw std::invalid_argument("--trace: only with --method paper");
     if (!o.quiet) {
       std::fprintf(stderr, "screen: %zu objects, %.0f s, threshold %.1f m, step %.1f s, %d threads\n",
-                   objects.size(), span_s, so.threshold_m, so.step_s, so.threads);
+                   objects.size(), span_s, so.threshold_m,
+                   so.step_s > 0.0 ? so.step_s : auto_step_s(objects.size()), so.threads);
       so.progress = [](double f) { std::fprintf(stderr, "\rscreen: %5.1f %%", 100.0 * f); };
     }
     const ScreenResult r = screen_robust(objects, span_s, so);
@@ -159,7 +160,8 @@ int run(const Options& o) {
                     {"root_solves", r.stats.root_solves},
                     {"pairs_after_apogee_perigee", r.stats.pairs_after_apogee_perigee},
                     {"all_pairs", objects.size() * (objects.size() - 1) / 2},
-                    {"threads", so.threads}};
+                    {"threads", so.threads},
+                    {"grid_step_s", so.step_s > 0.0 ? so.step_s : auto_step_s(objects.size())}};
   }
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -325,7 +325,7 @@ void ScreenOptions::validate() const {
   if (!(threshold_m >= 0.0) || !std::isfinite(threshold_m)) fail("threshold_m", threshold_m, "[0, inf)");
   if (!(warning_multiple > 1.0) || !std::isfinite(warning_multiple))
     fail("warning_multiple", warning_multiple, "(1, inf)");
-  if (!(step_s > 0.0) || !std::isfinite(step_s)) fail("step_s", step_s, "(0, inf)");
+  if (!(step_s >= 0.0) || !std::isfinite(step_s)) fail("step_s", step_s, "[0, inf), 0 = auto");
   if (!(leaf_s > 0.0) || !std::isfinite(leaf_s)) fail("leaf_s", leaf_s, "(0, inf)");
   if (!(tca_tol_s > 0.0) || !std::isfinite(tca_tol_s)) fail("tca_tol_s", tca_tol_s, "(0, inf)");
   if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
@@ -334,9 +334,16 @@ void ScreenOptions::validate() const {
   integ.validate();
 }
 
+double auto_step_s(std::size_t n_objects) {
+  const double n = static_cast<double>(std::max<std::size_t>(n_objects, 1));
+  return std::clamp(60.0 * std::cbrt(10000.0 / n), 10.0, 120.0);
+}
+
 ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
-                           const ScreenOptions& opt) {
-  opt.validate();
+                           const ScreenOptions& opt_in) {
+  opt_in.validate();
+  ScreenOptions opt = opt_in;
+  if (opt.step_s == 0.0) opt.step_s = auto_step_s(objects.size());
   if (!(span_s > 0.0) || !std::isfinite(span_s)) {
     throw std::invalid_argument("span_s = " + std::to_string(span_s) + " outside (0, inf)");
   }

@@ -39,7 +39,7 @@ struct ScreenOptions {
   double threshold_m = 5000.0;    ///< D: report every closest approach with miss <= D_ij
   bool include_warning_radius = true;  ///< D_ij = max(D, N R_c(i, j)) instead of D
   double warning_multiple = 5.0;  ///< N for the warning flag (and D_ij above)
-  double step_s = 60.0;           ///< grid step h [s]
+  double step_s = 60.0;           ///< grid step h [s]; 0 = auto_step_s(N)
   double leaf_s = 0.5;            ///< smallest subdivision of the narrow phase [s]
   double tca_tol_s = 1e-9;        ///< Brent bracket tolerance on the TCA [s]
   int threads = 2;                ///< worker threads (>= 1)
@@ -65,6 +65,12 @@ struct ScreenResult {
   std::vector<Conjunction> events;  ///< sorted by tca_s, then i, j
   ScreenStats stats;
 };
+
+/// Grid step balancing propagation (~N per step) against pair tests (~N^2 h^3 per step):
+/// cost per span ~ N/h + N^2 h^2 is smallest for h ~ N^(-1/3). Calibrated on this machine:
+/// 60 s was best at N = 10 000 (docs/parts/performance_conjunction.md);
+/// h = 60 (10 000/N)^(1/3) s, clamped to [10, 120] s.
+double auto_step_s(std::size_t n_objects);
 
 /// Screens [0, span_s]. Objects are validated first (std::invalid_argument on bad input).
 ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
