@@ -41,6 +41,7 @@ struct SimOptions {
   std::string detect_s;
   std::string noise_rad;
   std::string rate_hz;
+  std::string guidance_hz;
   std::string rate_noise_radps;
   bool no_rates = false;
   int runs = 0;
@@ -140,6 +141,7 @@ int run_sim(const SimOptions& o) {
   override_flag(sc, "--detect", "encounter.detect_before_tca_s", o.detect_s);
   override_flag(sc, "--noise-rad", "sensor.noise_rad", o.noise_rad);
   override_flag(sc, "--rate-hz", "sensor.rate_hz", o.rate_hz);
+  override_flag(sc, "--guidance-hz", "guidance.rate_hz", o.guidance_hz);
   override_flag(sc, "--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps);
   if (o.no_rates) sc.apply_override("sensor.rates=false");
   if (o.runs < 0 || o.runs > 1000000) {
@@ -275,6 +277,7 @@ const bool kRegistered = evade::cli::register_command(
                      "detection time before the nominal closest approach [s]");
       app.add_option("--noise-rad", o->noise_rad, "sensor angle noise 1-sigma [rad]");
       app.add_option("--rate-hz", o->rate_hz, "sensor sample rate [Hz]");
+      app.add_option("--guidance-hz", o->guidance_hz, "guidance cycle rate [Hz] (guidance.rate_hz)");
       app.add_option("--rate-noise-radps", o->rate_noise_radps,
                      "sensor angle-rate noise 1-sigma [rad/s]");
       app.add_flag("--no-rates", o->no_rates, "angles only (the filter estimates the rates)");
