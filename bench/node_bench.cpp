@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include <lcm/lcm.h>
@@ -85,7 +86,8 @@ void BM_NodeCycleMemq(benchmark::State& state) {
   lcm_t* lcm = lcm_create("memq://");
   NodeConfig cfg;
   cfg.stale_limit_s = 60.0;
-  GuidanceNode node(lcm, cfg);
+  auto node_ptr = std::make_unique<GuidanceNode>(lcm, cfg);  // must die before lcm
+  GuidanceNode& node = *node_ptr;
   CmdWaiter w;
   lcm_subscription_t* sub = lcm_subscribe(lcm, kChanCmd, &CmdWaiter::on_cmd, &w);
   std::uint8_t buf[512];
@@ -113,6 +115,7 @@ void BM_NodeCycleMemq(benchmark::State& state) {
   }
   report(state, lat);
   lcm_unsubscribe(lcm, sub);
+  node_ptr.reset();
   lcm_destroy(lcm);
 }
 BENCHMARK(BM_NodeCycleMemq)->Iterations(10000)->Unit(benchmark::kMicrosecond);
