@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -351,10 +352,25 @@ ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_
   ScreenResult res;
   const std::vector<ObjectBounds> bounds = object_bounds(objects, opt);
   const std::size_t n = objects.size();
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      if (apogee_perigee_may_meet(bounds[i], bounds[j], pair_threshold_m(objects[i], objects[j], opt)))
-        ++res.stats.pairs_after_apogee_perigee;
+  {
+    // Statistic only: pairs whose radius ranges come within D_max of each other, counted in
+    // O(N log N) (sorted perigee radii, binary search) rather than over all N^2 pairs.
+    double d_max = opt.threshold_m;
+    if (opt.include_warning_radius) {
+      double lmax = 0.0;
+      for (const auto& o : objects) lmax = std::max(lmax, o.size_m + o.pos_error_m);
+      d_max = std::max(d_max, opt.warning_multiple * 2.0 * lmax);
+    }
+    std::vector<std::pair<double, double>> ranges(n);
+    for (std::size_t i = 0; i < n; ++i) ranges[i] = {bounds[i].r_min_m, bounds[i].r_max_m};
+    std::sort(ranges.begin(), ranges.end());
+    for (std::size_t i = 0; i < n; ++i) {
+      const double reach = ranges[i].second + d_max;
+      const auto last = std::upper_bound(ranges.begin() + static_cast<long>(i) + 1, ranges.end(),
+                                         std::make_pair(reach, std::numeric_limits<double>::infinity()));
+      res.stats.pairs_after_apogee_perigee += last - (ranges.begin() + static_cast<long>(i) + 1);
+    }
+  }
   if (n < 2) return res;
   const long nsteps = static_cast<long>(std::ceil(span_s / opt.step_s - 1e-12));
   const int nthreads = static_cast<int>(std::min<long>(opt.threads, std::max(1L, nsteps)));

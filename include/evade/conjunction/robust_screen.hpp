@@ -58,7 +58,7 @@ struct ScreenStats {
   long candidates = 0;            ///< pairs whose boxes overlap and that pass apogee/perigee
   long refined = 0;               ///< intervals examined by the narrow phase
   long root_solves = 0;           ///< Brent solves on the range rate
-  long pairs_after_apogee_perigee = 0;  ///< pairs left by the apogee/perigee filter (static)
+  long pairs_after_apogee_perigee = 0;  ///< pairs whose radius ranges overlap within max D_ij
 };
 
 struct ScreenResult {
