@@ -8,6 +8,7 @@
 // Skipped (GTEST_SKIP, with the reason) only if unshare is not permitted on this machine.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -162,6 +163,72 @@ TEST(LcmLink, RecordedHilRunReplaysToIdenticalCommands) {
   EXPECT_GT(thrusting, 400);
   if (std::getenv("EVADE_DEBUG")) std::printf("kept %s\n", dir.c_str());
   else run("rm -rf '" + dir + "'");
+}
+
+}  // namespace
+
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+// Bad flags: exit 2 with the flag, value and range named (NODE-RT-2).
+TEST(NodeCli, BadFlagsExitTwoNamingTheFlag) {
+  const std::string dir = make_temp_dir();
+  ASSERT_FALSE(dir.empty());
+  const int rc = run(std::string("'") + EVADE_NODE_PATH +
+                     "' --lcm-url memq:// --rate-hz nan 2> '" + dir + "/err.txt'");
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  EXPECT_NE(slurp(dir + "/err.txt").find("--rate-hz"), std::string::npos);
+  const int rc2 = run(std::string("'") + EVADE_NODE_PATH +
+                      "' --lcm-url memq:// --max-accel-mps2 -1 2> '" + dir + "/err2.txt'");
+  ASSERT_TRUE(WIFEXITED(rc2));
+  EXPECT_EQ(WEXITSTATUS(rc2), 2);
+  EXPECT_NE(slurp(dir + "/err2.txt").find("(0, 100]"), std::string::npos);
+  run("rm -rf '" + dir + "'");
+}
+
+// SIGTERM ends the fixed-rate loop cleanly: exit 0 and the summary (NODE-RT-4).
+TEST(NodeCli, SigtermExitsCleanly) {
+  const std::string dir = make_temp_dir();
+  ASSERT_FALSE(dir.empty());
+  const int rc = run("sh -c \"'" + std::string(EVADE_NODE_PATH) +
+                     "' --lcm-url memq:// --rate-hz 100 --stats-json > '" + dir +
+                     "/out.json' 2> '" + dir + "/err.txt' & p=\\$!; sleep 0.5; kill -TERM \\$p; "
+                     "wait \\$p\"");
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 0);
+  const nlohmann::json j = read_json(dir + "/out.json");
+  EXPECT_EQ(j["exit_reason"], "signal");
+  EXPECT_GT(j["cycles"].get<long>(), 10);
+  run("rm -rf '" + dir + "'");
+}
+
+// --realtime without the privilege (an unprivileged user namespace cannot get SCHED_FIFO
+// on the host) says so on stderr and the node still runs (NODE-RT-4).
+TEST(NodeCli, RealtimeRefusedIsReportedAndNodeContinues) {
+  const std::string dir = make_temp_dir();
+  ASSERT_FALSE(dir.empty());
+  const bool userns = std::system("unshare -r true >/dev/null 2>&1") == 0;
+  const std::string prefix = userns ? "unshare -r " : "";
+  const int rc = run(prefix + "'" + EVADE_NODE_PATH +
+                     "' --lcm-url memq:// --rate-hz 200 --max-cycles 20 --realtime 2> '" + dir +
+                     "/err.txt'");
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 0);
+  const std::string err = slurp(dir + "/err.txt");
+  EXPECT_NE(err.find("after 20 cycles"), std::string::npos) << err;
+  if (err.find("refused") != std::string::npos) {
+    EXPECT_NE(err.find("continuing"), std::string::npos) << err;
+  } else {
+    std::printf("note: SCHED_FIFO and mlockall were granted here; refusal path not exercised\n");
+  }
+  run("rm -rf '" + dir + "'");
 }
 
 }  // namespace
