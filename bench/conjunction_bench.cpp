@@ -38,12 +38,12 @@ void screen_population(benchmark::State& state, double span_s) {
   state.counters["grid_steps"] = static_cast<double>(r.stats.steps);
 }
 
-// 1 day, 5 km, 2 threads; args: N, grid step [s].
+// 1 day, 5 km, 2 threads; args: N, grid step [s] (0 = auto_step_s(N)).
 void BM_ScreenOneDay(benchmark::State& state) { screen_population(state, 86400.0); }
 BENCHMARK(BM_ScreenOneDay)
-    ->Args({1000, 60})
-    ->Args({10000, 60})
-    ->Args({20000, 60})
+    ->Args({1000, 0})
+    ->Args({10000, 0})
+    ->Args({20000, 0})
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
@@ -51,12 +51,12 @@ BENCHMARK(BM_ScreenOneDay)
 // Growth of the cost with N (1 day would take long for the fit; 2 h keeps it quick).
 void BM_ScreenScaling(benchmark::State& state) { screen_population(state, 7200.0); }
 BENCHMARK(BM_ScreenScaling)
-    ->Args({1000, 60})
-    ->Args({2000, 60})
-    ->Args({4000, 60})
-    ->Args({8000, 60})
-    ->Args({16000, 60})
-    ->Args({32000, 60})
+    ->Args({1000, 0})
+    ->Args({2000, 0})
+    ->Args({4000, 0})
+    ->Args({8000, 0})
+    ->Args({16000, 0})
+    ->Args({32000, 0})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
