@@ -32,10 +32,10 @@ HcwTransfer::HcwTransfer(double n_radps, double transfer_s) : n_(n_radps), T_(tr
   rv_T_ = b.rv;
   vr_T_ = b.vr;
   vv_T_ = b.vv;
-  // Φrv(T) is singular when sin(nT) = 0 (out-of-plane block) or when the in-plane block's
-  // determinant 4(1−c)²... − s(4s − 3nT) vanishes (nT = 2πk among others). The 2-impulse
-  // closed form and the SQP's elimination of the end impulses need Φrv(T)⁻¹: reject a
-  // condition number (Frobenius estimate) above 1e9.
+  // Φrv(T) is singular when sin(nT) = 0 (out-of-plane block s/n) or when the in-plane block's
+  // determinant [s(4s − 3nT) + 4(1 − c)²]/n² vanishes (nT = 2πk among its roots). The
+  // 2-impulse closed form and the SQP's elimination of the end impulses need Φrv(T)⁻¹:
+  // reject a condition number (Frobenius estimate) above 1e9.
   const double det = rv_T_.determinant();
   const Mat3 inv = (det != 0.0) ? Mat3(rv_T_.inverse()) : Mat3::Zero();
   const double cond = rv_T_.norm() * inv.norm();
