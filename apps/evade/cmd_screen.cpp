@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -123,7 +124,10 @@ int run(const Options& o) {
                                   std::to_string(objects.size()) + " objects outside [2, 2000]");
     }
     Ephemeris eph(objects, gravity, earth, so.integ);
-    const PaperResult r = screen_paper(objects, span_s, prm, eph, o.trace);
+    std::function<void(double)> progress;
+    if (!o.quiet) progress = [](double f) { std::fprintf(stderr, "\rscreen (paper): %5.1f %%", 100.0 * f); };
+    const PaperResult r = screen_paper(objects, span_s, prm, eph, o.trace, progress);
+    if (!o.quiet) std::fprintf(stderr, "\n");
     events = r.events;
     out["steps"] = r.steps;
     if (o.trace) {

@@ -57,7 +57,8 @@ double paper_next_step_s(const PairSample& p, double h_now_s, const PaperStepPar
 }
 
 PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
-                         const PaperStepParams& prm, Ephemeris& eph, bool record_trace) {
+                         const PaperStepParams& prm, Ephemeris& eph, bool record_trace,
+                         const std::function<void(double)>& progress) {
   prm.validate();
   if (!(span_s >= 0.0) || !std::isfinite(span_s)) {
     throw std::invalid_argument("span_s = " + std::to_string(span_s) + " outside [0, inf)");
@@ -125,6 +126,9 @@ PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
     if (record_trace) res.trace.push_back(row);
     const double t_next = t + h_next;
     if (t_next > span_s) break;
+    if (progress && span_s > 0.0 && std::floor(100.0 * t_next / span_s) > std::floor(100.0 * t / span_s)) {
+      progress(t_next / span_s);
+    }
     t = t_next;
     h_now = h_next;
     ++res.steps;

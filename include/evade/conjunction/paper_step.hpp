@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "evade/conjunction/ephemeris.hpp"
@@ -77,8 +78,10 @@ struct PaperResult {
   std::vector<TraceRow> trace;  ///< every sample (when requested)
 };
 
-/// Runs the adaptive simulation over [0, span_s] (samples while t <= span_s).
+/// Runs the adaptive simulation over [0, span_s] (samples while t <= span_s). `progress`
+/// (may be empty) is called with the fraction of the span done, at most every 1 %.
 PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
-                         const PaperStepParams& prm, Ephemeris& eph, bool record_trace);
+                         const PaperStepParams& prm, Ephemeris& eph, bool record_trace,
+                         const std::function<void(double)>& progress = {});
 
 }  // namespace evade::conjunction
