@@ -1,6 +1,8 @@
 // HCW 2-impulse rendezvous in closed form and the primer-vector lower bound on the cost of
 // any impulsive rendezvous. Paper 001 (Yu, Wang, Sun 2017) sec. 2.1, eq. 1–3 (C-W transition
 // through impulses); the derivation of the bound is in evade/threat/rendezvous.hpp.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -125,6 +127,101 @@ PrimerBound HcwTransfer::primer_bound(const Vec6& d) const {
   out.lower_bound_mps = out.two_impulse_cost_mps / out.primer_max;
   out.primer_argmax_s = T_ * best_j / kPrimerSamples;
   return out;
+}
+
+double HcwTransfer::certified_primer_max(const Vec6& lambda, int* argmax_j) const {
+  const Vec3 lr = lambda.head<3>();
+  const Vec3 lv = lambda.tail<3>();
+  double best2 = -1.0;
+  int best_j = 0;
+  for (int j = 0; j <= kPrimerSamples; ++j) {
+    const double q = (rv_s_[j].transpose() * lr + vv_s_[j].transpose() * lv).squaredNorm();
+    if (q > best2) {
+      best2 = q;
+      best_j = j;
+    }
+  }
+  const double h = T_ / kPrimerSamples;
+  const double sqrt26 = std::sqrt(26.0);
+  const double p2_max = n_ * sqrt26 * lr.norm() + n_ * n_ * sqrt26 * lv.norm();
+  if (argmax_j != nullptr) *argmax_j = best_j;
+  return std::sqrt(best2) + h * h / 8.0 * p2_max;
+}
+
+PrimerBound HcwTransfer::dual_bound(const Vec6& d, double stop_above_mps,
+                                    int max_iterations) const {
+  return dual_bound(d, primer_bound(d), stop_above_mps, max_iterations);
+}
+
+PrimerBound HcwTransfer::dual_bound(const Vec6& d, const PrimerBound& primer,
+                                    double stop_above_mps, int max_iterations) const {
+  PrimerBound best = primer;
+  const double J2 = best.two_impulse_cost_mps;
+  const bool stopping = stop_above_mps >= 0.0;
+  if (J2 == 0.0 || !d.allFinite() || max_iterations <= 0) return best;
+  if (stopping && (best.lower_bound_mps > stop_above_mps || J2 <= stop_above_mps)) return best;
+
+  // Candidate impulse times: sample indices j (τ_j = jT/M); weights start from the 2-impulse
+  // plan plus a small share at the primer's largest |p| and its neighbours.
+  constexpr int kMaxCand = 14;
+  std::array<int, kMaxCand> cand{};
+  std::array<double, kMaxCand> w{};
+  int nc = 0;
+  const double w_floor = 1e-9 * J2;
+  auto add = [&](int j, double wj) {
+    if (j < 0 || j > kPrimerSamples || nc >= kMaxCand) return;
+    for (int k = 0; k < nc; ++k) {
+      if (cand[k] == j) return;
+    }
+    cand[nc] = j;
+    w[nc] = std::max(wj, w_floor);
+    ++nc;
+  };
+  const Vec3 dv1 = rv_T_inv_ * d.head<3>();
+  const Vec3 dv2 = d.tail<3>() - vv_T_ * dv1;
+  add(0, dv1.norm());
+  add(kPrimerSamples, dv2.norm());
+  const int jstar = static_cast<int>(std::lround(best.primer_argmax_s / T_ * kPrimerSamples));
+  for (int dj = -1; dj <= 1; ++dj) add(jstar + dj, 0.05 * J2);
+
+  for (int it = 0; it < max_iterations; ++it) {
+    Mat6 S = Mat6::Zero();
+    for (int k = 0; k < nc; ++k) {
+      const Mat3& rv = rv_s_[cand[k]];
+      const Mat3& vv = vv_s_[cand[k]];
+      S.block<3, 3>(0, 0).noalias() += w[k] * rv * rv.transpose();
+      S.block<3, 3>(0, 3).noalias() += w[k] * rv * vv.transpose();
+      S.block<3, 3>(3, 3).noalias() += w[k] * vv * vv.transpose();
+    }
+    S.block<3, 3>(3, 0) = S.block<3, 3>(0, 3).transpose();
+    const Vec6 mu = S.ldlt().solve(d);
+    if (!mu.allFinite()) break;
+    // Score μ as a certificate: λ = μ / certified max|p|.
+    int ja = 0;
+    const double pmax = certified_primer_max(mu, &ja);
+    const double num = mu.dot(d);
+    if (pmax > 0.0 && num > 0.0) {
+      const double lb = num / pmax;
+      if (lb > best.lower_bound_mps) {
+        best.lower_bound_mps = lb;
+        best.primer_max = J2 / lb;  // equivalent scaling of the 2-impulse cost
+        best.primer_argmax_s = T_ * ja / kPrimerSamples;
+      }
+    }
+    if (stopping && best.lower_bound_mps > stop_above_mps) break;
+    // IRLS step: v_k = w_k B_kᵀμ is feasible; its cost bounds the optimum from above.
+    double primal = 0.0;
+    for (int k = 0; k < nc; ++k) {
+      const double pk =
+          (rv_s_[cand[k]].transpose() * mu.head<3>() + vv_s_[cand[k]].transpose() * mu.tail<3>())
+              .norm();
+      w[k] = std::max(w[k] * pk, w_floor);
+      primal += w[k];
+    }
+    if (stopping && primal <= stop_above_mps) break;  // a plan within the limit: no bound can pass
+    for (int dj = -1; dj <= 1; ++dj) add(ja + dj, 0.05 * primal);
+  }
+  return best;
 }
 
 Vec6 HcwTransfer::plan_residual(const RendezvousPlan& plan, const Vec6& d) const {

@@ -104,6 +104,13 @@ bool ThreatAreaSolver::threatening(const Vec6& d, DecisionCounts& counts) const 
     ++counts.bound_reject;
     return false;
   }
+  // Tighter certified dual bound before the SQP. A certified bound above ΔV_max can only
+  // turn what would be an SQP "safe" verdict into a certified one: the SQP's plans are
+  // feasible, so their cost is ≥ any valid lower bound.
+  if (tr_.dual_bound(d, pb, vmax).lower_bound_mps > vmax) {
+    ++counts.bound_reject;
+    return false;
+  }
   SqpOptions s = opt_.sqp;
   s.stop_at_cost_mps = vmax;
   const RendezvousPlan plan = optimize_rendezvous(tr_, d, s);

@@ -1,6 +1,7 @@
 // Tests of the HCW rendezvous solvers (paper 001 sec. 2.1): the 2-impulse closed form, the
 // N-impulse SQP against an independent brute-force search, and the primer lower bound.
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -252,6 +253,47 @@ TEST(PrimerBound, EqualsTheTwoImpulseCostWhenThePrimerStaysWithinOne) {
   o.impulses = 4;
   EXPECT_NEAR(optimize_rendezvous(tr, d, o).cost_mps, pb.two_impulse_cost_mps, 1e-6);
   EXPECT_NEAR(pb.two_impulse_cost_mps, 83.5, 0.05);
+}
+
+// The dual (Neustadt) bound from IRLS: still a valid lower bound of every optimized plan, never
+// below the 2-impulse primer bound, and much tighter where extra impulses pay: the duality gap
+// closes at the optimum, so what is left is the IRLS's limited iterations on sample times and
+// the certified sampling margin (h²/8·max|p''| with h = T/64, whose Frobenius bound of |p''|
+// is loose). Measured on these 30 states: worst gap 1.98 % (1.61 % with 400 iterations, so
+// the rest is the sample-time restriction and the margin), against 79 % for the old bound.
+TEST(DualBound, IsBelowTheOptimizedCostAboveThePrimerBoundAndTight) {
+  int improved = 0;
+  double worst_rel_gap = 0.0, worst_old_gap = 0.0;
+  for (const Case& c : random_cases(30, 5)) {
+    const HcwTransfer tr(kN, c.T);
+    const Vec6 d = tr.required_change(c.x0, c.xf);
+    const PrimerBound old_b = tr.primer_bound(d);
+    const PrimerBound dual = tr.dual_bound(d);
+    EXPECT_GE(dual.lower_bound_mps, old_b.lower_bound_mps);
+    EXPECT_DOUBLE_EQ(dual.two_impulse_cost_mps, old_b.two_impulse_cost_mps);
+    double best = old_b.two_impulse_cost_mps;
+    for (int N : {3, 4}) {
+      SqpOptions o;
+      o.impulses = N;
+      o.starts = 8;
+      const double cost = optimize_rendezvous(tr, d, o).cost_mps;
+      EXPECT_LE(dual.lower_bound_mps, cost + 1e-9) << N;
+      best = std::min(best, cost);
+    }
+    if (dual.lower_bound_mps > old_b.lower_bound_mps * (1.0 + 1e-6)) ++improved;
+    worst_rel_gap = std::max(worst_rel_gap, 1.0 - dual.lower_bound_mps / best);
+    worst_old_gap = std::max(worst_old_gap, 1.0 - old_b.lower_bound_mps / best);
+    // Early stop: asking only whether the bound exceeds a threshold gives the same answer.
+    for (double frac : {0.9, 0.99, 1.01}) {
+      const double stop = frac * dual.lower_bound_mps;
+      EXPECT_EQ(tr.dual_bound(d, stop).lower_bound_mps > stop, dual.lower_bound_mps > stop)
+          << frac;
+    }
+  }
+  std::printf("dual bound: improved %d/30, worst gap to the best plan %.4f (old bound %.4f)\n",
+              improved, worst_rel_gap, worst_old_gap);
+  EXPECT_GT(improved, 10);
+  EXPECT_LT(worst_rel_gap, 0.025);
 }
 
 }  // namespace

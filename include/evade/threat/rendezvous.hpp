@@ -30,6 +30,18 @@
 // the entrywise derivatives of Φvv: (c, 2s, −2s, 4c−3, c)' = n(−s, 2c, −2c, −4s, −s)). The
 // bound is therefore a rigorous upper bound of max|p| and J2/that a rigorous lower bound.
 //
+// Tighter dual bound (Neustadt 1964; the LP/SOCP duality behind Lawden's primer). The best λ
+// maximizes λᵀd / max_s|B(s)ᵀλ| and at the optimum equals the cost of the optimal impulsive
+// plan. dual_bound() improves λ by iteratively reweighted least squares (IRLS) on the
+// restricted primal "min Σ_k |v_k| s.t. Σ_k B_k v_k = d" over a few candidate impulse times
+// (τ = 0, T, and the primer samples around the largest |p|): with weights w_k > 0,
+//     μ = (Σ_k w_k B_k B_kᵀ)⁻¹ d,  v_k = w_k B_kᵀ μ (feasible: Σ B_k v_k = d),  w_k ← |v_k|,
+// a majorize-minimize iteration whose μ converges to the restricted problem's dual (|B_kᵀμ|
+// = 1 on the support). Every iterate μ is scored as a certificate μᵀd / max|p|, max|p| with
+// the same certified sampling margin as above, so the result is a rigorous lower bound
+// whatever the iteration does (it is only more or less tight); the best score is kept and
+// is never below the 2-impulse primer bound.
+//
 // N impulses (SQP). Variables: the N−2 intermediate times τ_i ∈ [0, T] and impulses Δv_i;
 // the first (τ = 0) and last (τ = T) impulses are the 2-impulse solution of the residual
 // e = d − Σ B(T−τ_i)Δv_i. With J = φ(Δv1) + Σ φ(Δv_i) + φ(ΔvN), φ(v) = √(|v|²+ε²) − ε (a
@@ -89,6 +101,16 @@ class HcwTransfer {
   double two_impulse_cost(const Vec6& d) const;
   /// Primer-vector lower bound for the cost of any impulsive plan achieving d.
   PrimerBound primer_bound(const Vec6& d) const;
+  /// Dual lower bound: max(primer_bound, best IRLS certificate after ≤ max_iterations).
+  /// Stops early once the bound exceeds stop_above_mps, or once the IRLS primal (a feasible
+  /// plan) costs ≤ stop_above_mps (then no bound can exceed it).
+  PrimerBound dual_bound(const Vec6& d, double stop_above_mps = -1.0,
+                         int max_iterations = 40) const;
+  /// Same, starting from primer_bound(d) already computed by the caller.
+  PrimerBound dual_bound(const Vec6& d, const PrimerBound& primer, double stop_above_mps,
+                         int max_iterations = 40) const;
+  /// Certified upper bound of max_τ |B(T−τ)ᵀλ| (samples + margin); argmax sample index.
+  double certified_primer_max(const Vec6& lambda, int* argmax_j = nullptr) const;
   /// Primer p(τ) = B(T−τ)ᵀ λ for a given λ (exposed for tests).
   Vec3 primer(const Vec6& lambda, double tau_s) const;
   /// λ of the 2-impulse solution of d (with unit vectors u1, u2; zero impulses give 0).
