@@ -154,7 +154,9 @@ PrimerBound HcwTransfer::dual_bound(const Vec6& d, double stop_above_mps,
 }
 
 PrimerBound HcwTransfer::dual_bound(const Vec6& d, const PrimerBound& primer,
-                                    double stop_above_mps, int max_iterations) const {
+                                    double stop_above_mps, int max_iterations,
+                                    RendezvousPlan* three_impulse) const {
+  if (three_impulse != nullptr) *three_impulse = RendezvousPlan{};
   PrimerBound best = primer;
   const double J2 = best.two_impulse_cost_mps;
   const bool stopping = stop_above_mps >= 0.0;
@@ -166,6 +168,8 @@ PrimerBound HcwTransfer::dual_bound(const Vec6& d, const PrimerBound& primer,
   constexpr int kMaxCand = 14;
   std::array<int, kMaxCand> cand{};
   std::array<double, kMaxCand> w{};
+  std::array<Vec3, kMaxCand> v{};  // the last IRLS plan's impulses
+  bool have_plan = false;
   int nc = 0;
   const double w_floor = 1e-9 * J2;
   auto add = [&](int j, double wj) {
@@ -212,14 +216,42 @@ PrimerBound HcwTransfer::dual_bound(const Vec6& d, const PrimerBound& primer,
     // IRLS step: v_k = w_k B_kᵀμ is feasible; its cost bounds the optimum from above.
     double primal = 0.0;
     for (int k = 0; k < nc; ++k) {
-      const double pk =
-          (rv_s_[cand[k]].transpose() * mu.head<3>() + vv_s_[cand[k]].transpose() * mu.tail<3>())
-              .norm();
-      w[k] = std::max(w[k] * pk, w_floor);
+      const Vec3 pk =
+          rv_s_[cand[k]].transpose() * mu.head<3>() + vv_s_[cand[k]].transpose() * mu.tail<3>();
+      v[k] = w[k] * pk;
+      w[k] = std::max(w[k] * pk.norm(), w_floor);
       primal += w[k];
     }
+    have_plan = true;
     if (stopping && primal <= stop_above_mps) break;  // a plan within the limit: no bound can pass
     for (int dj = -1; dj <= 1; ++dj) add(ja + dj, 0.05 * primal);
+  }
+  if (three_impulse != nullptr && have_plan) {
+    // Merge the interior impulses within ±2 samples of the largest one into one impulse at
+    // their |v|-weighted mean time (first-order cost-neutral for nearby times), drop the
+    // others, and close the rendezvous exactly with the end impulses.
+    int top = -1;
+    for (int k = 0; k < nc; ++k) {
+      if (cand[k] == 0 || cand[k] == kPrimerSamples) continue;
+      if (top < 0 || v[k].norm() > v[top].norm()) top = k;
+    }
+    if (top >= 0) {
+      Vec3 dvm = Vec3::Zero();
+      double wsum = 0.0, tsum = 0.0;
+      for (int k = 0; k < nc; ++k) {
+        if (cand[k] == 0 || cand[k] == kPrimerSamples || std::abs(cand[k] - cand[top]) > 2) continue;
+        dvm += v[k];
+        wsum += v[k].norm();
+        tsum += v[k].norm() * (T_ * cand[k] / kPrimerSamples);
+      }
+      const double tm = wsum > 0.0 ? std::clamp(tsum / wsum, 0.0, T_) : T_ * cand[top] / kPrimerSamples;
+      const HcwBlocks b = hcw_stm_blocks(n_, T_ - tm);
+      const Vec3 e1 = rv_T_inv_ * (d.head<3>() - b.rv * dvm);
+      const Vec3 en = d.tail<3>() - b.vv * dvm - vv_T_ * e1;
+      RendezvousPlan& pl = *three_impulse;
+      pl.impulses = {{0.0, e1}, {tm, dvm}, {T_, en}};
+      pl.cost_mps = e1.norm() + dvm.norm() + en.norm();
+    }
   }
   return best;
 }

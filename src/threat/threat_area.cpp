@@ -36,6 +36,7 @@ DecisionCounts& DecisionCounts::operator+=(const DecisionCounts& o) {
   bound_reject += o.bound_reject;
   sqp_threat += o.sqp_threat;
   sqp_safe += o.sqp_safe;
+  plan_accept += o.plan_accept;
   return *this;
 }
 
@@ -107,9 +108,16 @@ bool ThreatAreaSolver::threatening(const Vec6& d, DecisionCounts& counts) const 
   // Tighter certified dual bound before the SQP. A certified bound above ΔV_max can only
   // turn what would be an SQP "safe" verdict into a certified one: the SQP's plans are
   // feasible, so their cost is ≥ any valid lower bound.
-  if (tr_.dual_bound(d, pb, vmax).lower_bound_mps > vmax) {
+  RendezvousPlan quick;
+  if (tr_.dual_bound(d, pb, vmax, 40, &quick).lower_bound_mps > vmax) {
     ++counts.bound_reject;
     return false;
+  }
+  // A feasible 3-impulse plan (exact cost) from the same iteration: within ΔV_max ⇒
+  // threatening, exactly as an SQP plan within ΔV_max would be (N ≥ 3; a zero 4th impulse).
+  if (!quick.impulses.empty() && quick.cost_mps <= vmax) {
+    ++counts.plan_accept;
+    return true;
   }
   SqpOptions s = opt_.sqp;
   s.stop_at_cost_mps = vmax;

@@ -280,6 +280,15 @@ TEST(DualBound, IsBelowTheOptimizedCostAboveThePrimerBoundAndTight) {
       EXPECT_LE(dual.lower_bound_mps, cost + 1e-9) << N;
       best = std::min(best, cost);
     }
+    // The 3-impulse plan built from the IRLS iterate is a real rendezvous (residual at
+    // rounding level of |d| ~ 1e5 m) whose exact cost is at or above every lower bound.
+    RendezvousPlan quick;
+    tr.dual_bound(d, old_b, -1.0, 40, &quick);
+    if (!quick.impulses.empty()) {
+      EXPECT_EQ(quick.impulses.size(), 3u);
+      EXPECT_LT(tr.plan_residual(quick, d).norm(), 1e-6 * (1.0 + d.norm()));
+      EXPECT_GE(quick.cost_mps, dual.lower_bound_mps);
+    }
     if (dual.lower_bound_mps > old_b.lower_bound_mps * (1.0 + 1e-6)) ++improved;
     worst_rel_gap = std::max(worst_rel_gap, 1.0 - dual.lower_bound_mps / best);
     worst_old_gap = std::max(worst_old_gap, 1.0 - old_b.lower_bound_mps / best);

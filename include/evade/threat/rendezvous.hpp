@@ -106,9 +106,12 @@ class HcwTransfer {
   /// plan) costs ≤ stop_above_mps (then no bound can exceed it).
   PrimerBound dual_bound(const Vec6& d, double stop_above_mps = -1.0,
                          int max_iterations = 40) const;
-  /// Same, starting from primer_bound(d) already computed by the caller.
+  /// Same, starting from primer_bound(d) already computed by the caller. If three_impulse is
+  /// given, it receives a feasible 3-impulse plan (exact end impulses, exact cost) built from
+  /// the last IRLS plan, or an empty plan if there is none.
   PrimerBound dual_bound(const Vec6& d, const PrimerBound& primer, double stop_above_mps,
-                         int max_iterations = 40) const;
+                         int max_iterations = 40,
+                         RendezvousPlan* three_impulse = nullptr) const;
   /// Certified upper bound of max_τ |B(T−τ)ᵀλ| (samples + margin); argmax sample index.
   double certified_primer_max(const Vec6& lambda, int* argmax_j = nullptr) const;
   /// Primer p(τ) = B(T−τ)ᵀ λ for a given λ (exposed for tests).

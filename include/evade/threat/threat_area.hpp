@@ -16,7 +16,9 @@
 //     d(t) = x_T(t + ΔT) − Φ(ΔT) x_C(t) = Φ(t+ΔT)(x_T0 − x_C0) + B(t+ΔT) Δv_E.
 // t threatens iff the minimum N-impulse cost of d(t) ≤ ΔV_max. Each point is decided by the
 // cheapest sufficient test: 2-impulse cost ≤ ΔV_max ⇒ threatening (a feasible plan); primer
-// lower bound > ΔV_max ⇒ safe (certified); otherwise the N-impulse SQP (threatening iff it
+// lower bound > ΔV_max ⇒ safe (certified); the tighter dual lower bound > ΔV_max ⇒ safe
+// (certified); the 3-impulse plan of the same IRLS iteration (N ≥ 3) within ΔV_max ⇒
+// threatening (a feasible plan); otherwise the N-impulse SQP (threatening iff it
 // finds a plan within ΔV_max — the only non-certified "safe" verdict, counted separately).
 // Interval edges are refined by bisection between a safe and a threatening sweep point.
 #pragma once
@@ -56,7 +58,10 @@ struct DecisionCounts {
   long bound_reject = 0;        ///< primer lower bound > ΔV_max ⇒ safe
   long sqp_threat = 0;          ///< SQP found a plan within ΔV_max
   long sqp_safe = 0;            ///< SQP did not (not certified)
-  long total() const { return two_impulse_accept + bound_reject + sqp_threat + sqp_safe; }
+  long plan_accept = 0;         ///< 3-impulse plan of the dual iteration within ΔV_max ⇒ threat
+  long total() const {
+    return two_impulse_accept + bound_reject + sqp_threat + sqp_safe + plan_accept;
+  }
   DecisionCounts& operator+=(const DecisionCounts& o);
 };
 
