@@ -148,6 +148,32 @@ double HcwTransfer::certified_primer_max(const Vec6& lambda, int* argmax_j) cons
   return std::sqrt(best2) + h * h / 8.0 * p2_max;
 }
 
+bool HcwTransfer::certify_primer_below(const Vec6& lambda, double cap) const {
+  const Vec3 lr = lambda.head<3>();
+  const Vec3 lv = lambda.tail<3>();
+  const double h = T_ / kPrimerSamples;
+  const double sqrt26 = std::sqrt(26.0);
+  const double p2_max = n_ * sqrt26 * lr.norm() + n_ * n_ * sqrt26 * lv.norm();
+  const double margin = h * h / 8.0 * p2_max;
+  constexpr int kSub = 8;  // sub-steps of a refined interval: margin / 64
+  const double sub_margin = margin / (kSub * kSub);
+  std::array<double, kPrimerSamples + 1> q{};
+  for (int j = 0; j <= kPrimerSamples; ++j) {
+    q[j] = (rv_s_[j].transpose() * lr + vv_s_[j].transpose() * lv).norm();
+    if (q[j] >= cap) return false;
+  }
+  for (int j = 0; j < kPrimerSamples; ++j) {
+    if (std::max(q[j], q[j + 1]) + margin < cap) continue;
+    double prev = q[j];
+    for (int k = 1; k <= kSub; ++k) {
+      const double qk = (k == kSub) ? q[j + 1] : primer(lambda, h * (j + double(k) / kSub)).norm();
+      if (std::max(prev, qk) + sub_margin >= cap) return false;
+      prev = qk;
+    }
+  }
+  return true;
+}
+
 PrimerBound HcwTransfer::dual_bound(const Vec6& d, double stop_above_mps,
                                     int max_iterations) const {
   return dual_bound(d, primer_bound(d), stop_above_mps, max_iterations);
@@ -211,6 +237,12 @@ PrimerBound HcwTransfer::dual_bound(const Vec6& d, const PrimerBound& primer,
         best.primer_max = J2 / lb;  // equivalent scaling of the 2-impulse cost
         best.primer_argmax_s = T_ * ja / kPrimerSamples;
       }
+    }
+    if (stopping && best.lower_bound_mps <= stop_above_mps && num > 0.0 &&
+        certify_primer_below(mu, num / stop_above_mps)) {
+      // Close call: the finer certification shows max|p| < λᵀd/ΔV, i.e. bound > stop.
+      best.lower_bound_mps = std::nextafter(stop_above_mps, 2.0 * stop_above_mps + 1.0);
+      best.primer_max = J2 / best.lower_bound_mps;
     }
     if (stopping && best.lower_bound_mps > stop_above_mps) break;
     // IRLS step: v_k = w_k B_kᵀμ is feasible; its cost bounds the optimum from above.
