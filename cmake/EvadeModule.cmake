@@ -30,16 +30,20 @@ function(evade_add_module)
   endif()
 endfunction()
 
-# evade_add_test(<name> SOURCES ... LIBS ... [LABELS ...] [TIMEOUT s])
+# evade_add_test(<name> SOURCES ... LIBS ... [LABELS ...] [TIMEOUT s] [RUN_SERIAL])
 # One gtest executable per test file group, registered with gtest_discover_tests.
 function(evade_add_test name)
-  cmake_parse_arguments(T "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
+  cmake_parse_arguments(T "RUN_SERIAL" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
   evade_set_warnings(${name})
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 600)
   endif()
+  set(serial FALSE)
+  if(T_RUN_SERIAL)
+    set(serial TRUE)  # timing- or network-sensitive: never beside another test
+  endif()
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-    PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}")
+    PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}" RUN_SERIAL ${serial})
 endfunction()

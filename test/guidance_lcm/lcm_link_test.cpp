@@ -53,7 +53,7 @@ nlohmann::json read_json(const std::string& path) {
 }
 
 // Writes the namespace script: optional logger, node in lockstep, sim over LCM.
-std::string write_script(const std::string& dir, bool record) {
+std::string write_script(const std::string& dir, bool record, int realtime_factor = 10) {
   const std::string p = dir + "/run.sh";
   std::ofstream s(p);
   s << "set -e\n"
@@ -69,7 +69,7 @@ std::string write_script(const std::string& dir, bool record) {
   s << "'" << EVADE_NODE_PATH << "' --lcm-url \"$URL\" --lockstep --scenario seed0 "
        "--max-accel-mps2 1 --idle-exit-s 20 --quiet --stats-json > \"$D/node.json\" &\n"
        "NODE=$!\n"
-       << (record ? "EVADE_SIM_LCM_REALTIME_FACTOR=10 " : "") << "'" << EVADE_CLI_PATH << "' sim --scenario seed0 --accel 1 --detect 10 --lcm \"$URL\" "
+       << (record ? "EVADE_SIM_LCM_REALTIME_FACTOR=" + std::to_string(realtime_factor) + " " : "") << "'" << EVADE_CLI_PATH << "' sim --scenario seed0 --accel 1 --detect 10 --lcm \"$URL\" "
        "--lcm-timeout-s 10 --json > \"$D/sim_lcm.json\"\n"
        "kill -TERM $NODE; wait $NODE\n";
   if (record) s << "sleep 0.3\nkill -INT $LOG; wait $LOG || true\n";
@@ -132,7 +132,21 @@ TEST(LcmLink, RecordedHilRunReplaysToIdenticalCommands) {
   }
   const std::string dir = make_temp_dir();
   ASSERT_FALSE(dir.empty());
-  ASSERT_EQ(run("unshare -rn sh '" + write_script(dir, true) + "'"), 0);
+  // Recording: lcm-logger is a separate UDP receiver; on a loaded machine it can be starved
+  // and lose datagrams (UDP gives no back-pressure). A complete recording is a precondition
+  // of the replay check, not the property under test, so an incomplete one is re-recorded
+  // more slowly (10x, 4x, then 1x real time). The replay check below stays exact.
+  long sim_cycles = -1;
+  std::size_t recorded = 0;
+  for (int factor : {10, 4, 1}) {
+    ASSERT_EQ(run("unshare -rn sh '" + write_script(dir, true, factor) + "'"), 0);
+    int other = 0;
+    recorded = commands_in_log(dir + "/hil.lcmlog", &other).size();
+    sim_cycles = read_json(dir + "/sim_lcm.json")["cycles"].get<long>();
+    if (static_cast<long>(recorded) == sim_cycles) break;
+    std::printf("lcm-logger recorded %zu of %ld commands at %dx real time: re-recording slower\n",
+                recorded, sim_cycles, factor);
+  }
   // Replay: the node reads the recorded inputs from the log (file://, as fast as possible)
   // and writes its commands to a second log.
   ASSERT_EQ(run(std::string("'") + EVADE_NODE_PATH + "' --lcm-url 'file://" + dir +
@@ -145,7 +159,7 @@ TEST(LcmLink, RecordedHilRunReplaysToIdenticalCommands) {
   const auto replay = commands_in_log(dir + "/replay.lcmlog", &other_replay);
   const nlohmann::json sim = read_json(dir + "/sim_lcm.json");
   ASSERT_EQ(static_cast<long>(hil.size()), sim["cycles"].get<long>())
-      << "lcm-logger lost datagrams (the run is paced at 10x real time for it)";
+      << "lcm-logger lost datagrams even at 1x real time";
   EXPECT_GT(other_hil, 3 * static_cast<int>(hil.size()) - 1)
       << "nav, angles, clock and status recorded too";
   ASSERT_EQ(replay.size(), hil.size());
