@@ -59,6 +59,9 @@ BENCHMARK(BM_ArcMinimization)
     ->Args({20, 3, 1})
     ->Args({20, 4, 2})
     ->Args({100, 3, 2})
+    ->Args({100, 3, 1})
+    ->Args({100, 4, 2})
+    ->Args({200, 3, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(1)
@@ -93,6 +96,21 @@ void BM_PrimerBound(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_PrimerBound);
+
+// The dual (IRLS) bound at a point of the V_E = 100 m/s sweep that the 2-impulse primer bound
+// cannot decide (next to the optimal arc's edge at 555.06 s), without early stop (40
+// iterations) and in decision mode (stop at ΔV_max = 324 m/s, refined certification).
+void BM_DualBound(benchmark::State& state) {
+  const ThreatAreaSolver s(geometry(), options(3, 1));
+  const Vec3 dv = evasion_dv_rsw(100.0, -0.88144311950409548, -3.0945469894971969);
+  Vec6 d = s.required_change(556.0, dv);  // J2 = 324.33, primer bound 323.71 m/s
+  const double stop = state.range(0) != 0 ? 324.0 : -1.0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(s.transfer().dual_bound(d, stop).lower_bound_mps);
+    d(0) += 1e-9;
+  }
+}
+BENCHMARK(BM_DualBound)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 void BM_SqpRendezvous(benchmark::State& state) {
   const HcwTransfer tr(geometry().n_radps, 2200.0);
