@@ -2,6 +2,7 @@
 // one chaser period with a fixed step, Fig. 2) and sec. 3.1 eq. 4–7 (relative states after the
 // evasion, N_T × S_step). Model and decision tests: see evade/threat/threat_area.hpp.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <stdexcept>
@@ -140,13 +141,19 @@ ThreatArea ThreatAreaSolver::evaluate(const Vec3& dv_e) const {
   std::vector<DecisionCounts> counts(nthreads);
   std::vector<std::exception_ptr> errors(nthreads);
 
+  // Dynamic chunks: the costly points (near interval edges) are not evenly spread, so the
+  // threads take the next chunk of 32 points when free. Each point's verdict is independent
+  // of which thread decides it, so the result does not depend on the schedule.
+  constexpr long kChunk = 32;
+  std::atomic<long> next{0};
   auto sweep = [&](int part) {
     try {
-      const long lo = k * part / nthreads;
-      const long hi = k * (part + 1) / nthreads;
-      for (long i = lo; i < hi; ++i) {
-        const Vec6 d = w_grid_[i] + b_grid_[i] * dv_e;
-        threat[i] = threatening(d, counts[part]) ? 1 : 0;
+      for (long lo = next.fetch_add(kChunk); lo < k; lo = next.fetch_add(kChunk)) {
+        const long hi = std::min(k, lo + kChunk);
+        for (long i = lo; i < hi; ++i) {
+          const Vec6 d = w_grid_[i] + b_grid_[i] * dv_e;
+          threat[i] = threatening(d, counts[part]) ? 1 : 0;
+        }
       }
     } catch (...) {
       errors[part] = std::current_exception();
