@@ -46,7 +46,9 @@ nlohmann::json counts_json(const DecisionCounts& c) {
   return {{"two_impulse_accept", c.two_impulse_accept},
           {"bound_reject", c.bound_reject},
           {"sqp_threat", c.sqp_threat},
-          {"sqp_safe", c.sqp_safe}};
+          {"sqp_safe", c.sqp_safe},
+          {"plan_accept", c.plan_accept},
+          {"total", c.total()}};
 }
 
 nlohmann::json intervals_json(const ThreatArea& a) {
