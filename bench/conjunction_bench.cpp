@@ -3,7 +3,7 @@
 // its own case. Counters: pairs_checked (pairs sharing a grid cell), candidates (boxes
 // overlap and apogee/perigee pass), events (approaches <= 5 km), all_pairs (N(N-1)/2).
 // Run: build-dir/bench/conjunction_bench --benchmark_filter=Screen
-// Results and machine: docs/parts/performance_conjunction.md.
+// Results and machine: docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
 
 #include "evade/conjunction/paper_step.hpp"

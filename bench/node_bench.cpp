@@ -1,4 +1,4 @@
-// Guidance node benchmarks (docs/parts/performance_node.md).
+// Guidance node benchmarks (docs/PERFORMANCE.md).
 //  BM_NodeCycleMemq: one full node cycle on memq:// with its inputs — publish nav + angles
 //    (preallocated encode), drain, validate, step the paper-000 law, encode + publish command
 //    and status, and the subscriber receiving the command: measurement -> command latency

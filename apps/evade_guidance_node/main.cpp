@@ -1,7 +1,7 @@
 // evade_guidance_node: the paper-000 close-range evasion guidance (guidance_law.hpp) as a
 // real-time LCM node. Inputs evade_angles_t / evade_nav_state_t / evade_arm_t (and, with
 // --lockstep, evade_sim_clock_t); outputs one evade_thrust_cmd_t per cycle and
-// evade_guidance_status_t. Design and requirement IDs: docs/parts/design_node.md.
+// evade_guidance_status_t. Design and requirement IDs: docs/GUIDANCE_NODE.md.
 // Exit codes: 0 normal stop (signal, --max-cycles, end of input), 1 runtime failure,
 // 2 bad input (flags or config, with the key, value and allowed range).
 #include <algorithm>

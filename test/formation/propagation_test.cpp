@@ -56,7 +56,7 @@ TEST(FormationPropagation, AnalyticLimitsAgreeWithPropagatedBisection) {
       // Brief: within 5 %. Only "small" Δa (<= 5 km, Δa/a <= 7e-4) — the paper's linear
       // drift model: rows whose limit is ~100 km (out-of-plane with 18+ km of margin) are
       // outside it (K_Ω ∝ a^-4.5 changes 6 % over Δa = 100 km) and are tabulated in
-      // docs/parts/validation_003.md instead.
+      // docs/VALIDATION.md instead.
       if (!std::isfinite(a) || a > 5000.0) continue;
       ++compared;
       EXPECT_NEAR(n / a - 1.0, 0.0, 0.05) << num[r].name << (d == 0 ? " raise" : " lower")

@@ -3,7 +3,7 @@
 // preallocated buffers, drain, validate, step the law, encode, publish command and status,
 // the test's own command subscriber handles them) the count must stay 0.
 // Scope: C++ operator new only. LCM's C library mallocs a copy of each message inside the
-// memq/udpm providers; that is outside our code (see docs/parts/design_node.md).
+// memq/udpm providers; that is outside our code (see docs/GUIDANCE_NODE.md).
 #include <gtest/gtest.h>
 
 #include <atomic>

@@ -183,7 +183,7 @@ TEST(ObservabilityObjectives, K0TermLimitAddsUnitDvDotLos) {
 TEST(ObservabilityPaper004, PaperObjectiveOptimumNearPublishedTheta) {
   // Paper: optimum [ε, θ] = [0, −3.231], f = 100.9991. Ours (frame P, k = 0 term = 0):
   // θ ≈ −3.2453, f ≈ 96.498. The tolerance 0.02 rad is the acceptance bound; the
-  // peak is flat (f drops by 0.009 from −3.2453 to −3.231), see docs/parts/validation_004.md.
+  // peak is flat (f drops by 0.009 from −3.2453 to −3.231), see docs/VALIDATION.md.
   const SampledProblem s = sample(seed4());
   const GridBest g = grid_search(s.problem, true, [&](double e, double t) { return paper_objective(s, e, t); });
   std::printf("paper objective: ours theta = %.5f eps = %.5f f = %.5f | paper theta = -3.231 f = 100.9991\n",

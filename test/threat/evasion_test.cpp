@@ -56,7 +56,7 @@ TEST(Evasion, EliminatingBurnRespectsTheT0BoundAndIsWithinOnePercentOfIt) {
   const ThreatAreaSolver s(seed1_geometry(), test_options());
   // Tolerance 1 m/s (< the 1 % = 2.4 m/s being tested) and 200 evaluations per V_E keep the
   // bisection within the unit-test budget; the CLI run with the paper's budget is in
-  // docs/parts/validation_001.md.
+  // docs/VALIDATION.md.
   const EliminationResult e = find_eliminating_dv(s, test_evasion(), 1.0);
   // README §001: J(t0) ≈ 83.5 m/s, bound ≈ 324 − 83.5 = 240.5 m/s.
   EXPECT_NEAR(e.j_t0_mps, 83.5, 0.05);

@@ -10,7 +10,7 @@
 //     approaching, no collision, T <= T_CA-> h_next = h_now / L_D
 //     collision (|dR| <= R_c, eq. 2)      -> h_next = h_sim
 //   Several objects: the smallest h_next over all pairs (section 2, last paragraph).
-// Two defects of the printed pseudo-code are corrected (docs/parts/validation_002.md):
+// Two defects of the printed pseudo-code are corrected (docs/VALIDATION.md):
 //  (1) it calls dR.dV > 0 "approaching"; with dR = R_j - R_i approaching is dR.dV < 0;
 //  (2) its first line `h_now = h_sim` is the initialization of the run, not a reset at each
 //      call (taken literally the step never shrinks below h_sim and nothing is flagged).

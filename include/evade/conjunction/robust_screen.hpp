@@ -21,7 +21,7 @@
 //   at most one root in [a, b], and a closest approach exists iff f(a) < 0 <= f(b); it is
 //   located by Brent's method (events.hpp) on f and kept if its miss is <= D. If f cannot
 //   be shown monotone (slow co-orbital pairs), [a, b] is halved down to leaf_s and the sign
-//   test is applied on each leaf (docs/parts/validation_002.md bounds what that can miss).
+//   test is applied on each leaf (docs/VALIDATION.md bounds what that can miss).
 // The steps are split between threads (std::thread); events are merged and sorted.
 #pragma once
 
@@ -68,7 +68,7 @@ struct ScreenResult {
 
 /// Grid step balancing propagation (~N per step) against pair tests (~N^2 h^3 per step):
 /// cost per span ~ N/h + N^2 h^2 is smallest for h ~ N^(-1/3). Calibrated on this machine:
-/// 60 s was best at N = 10 000 (docs/parts/performance_conjunction.md);
+/// 60 s was best at N = 10 000 (docs/PERFORMANCE.md);
 /// h = 60 (10 000/N)^(1/3) s, clamped to [10, 120] s.
 double auto_step_s(std::size_t n_objects);
 

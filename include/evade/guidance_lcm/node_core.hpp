@@ -2,7 +2,7 @@
 // the law (paper 000 guidance, evade/guidance/guidance_law.hpp), publish one command and the
 // status. The timing loop (fixed rate on absolute deadlines, or lockstep on sim-clock ticks)
 // lives in apps/evade_guidance_node; tests drive this class directly over memq://.
-// Requirements: docs/parts/design_node.md (NODE-IN-*, NODE-OUT-*, NODE-WD-*, NODE-RT-*).
+// Requirements: docs/GUIDANCE_NODE.md (NODE-IN-*, NODE-OUT-*, NODE-WD-*, NODE-RT-*).
 //
 // Cycle shape (STYLE.md §2): drain LCM into the bounded queue (receive callback copies raw
 // bytes only) → decode + validate + seq/utime checks, newest valid message per channel is

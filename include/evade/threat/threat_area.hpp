@@ -5,7 +5,7 @@
 // one chaser period, Fig. 2) and sec. 3.1 (new relative states after the target's evasion,
 // eq. 4–5; arc length from the number of threatening points N_T and the step, eq. 6–7).
 //
-// Model (our reading, docs/parts/validation_001.md): HCW (RSW) about the target's ORIGINAL
+// Model (our reading, docs/VALIDATION.md): HCW (RSW) about the target's ORIGINAL
 // circular orbit, mean motion n. At t0 = 0 the target is at x_T0 (normally the origin) and
 // applies Δv_E; from then on x_T(t) = Φ(t)(x_T0 + [0; Δv_E]) — the evaded target is modelled
 // by linear relative motion about the unchanged reference, valid while its displacement stays
