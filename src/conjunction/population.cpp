@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/conjunction/kepler_orbit.hpp"
+#include "evade/dynamics/kepler_propagator.hpp"
 #include "evade/core/elements.hpp"
 
 namespace evade::conjunction {

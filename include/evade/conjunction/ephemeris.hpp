@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "evade/conjunction/kepler_orbit.hpp"
+#include "evade/dynamics/kepler_propagator.hpp"
 #include "evade/conjunction/types.hpp"
 #include "evade/dynamics/dop853.hpp"
 #include "evade/dynamics/gravity.hpp"
