@@ -143,7 +143,10 @@ int run_sim(const SimOptions& o) {
   override_flag(sc, "--rate-hz", "sensor.rate_hz", o.rate_hz);
   override_flag(sc, "--guidance-hz", "guidance.rate_hz", o.guidance_hz);
   override_flag(sc, "--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps);
-  if (o.no_rates) sc.apply_override("sensor.rates=false");
+  // --noise-rad switches to an angles-only sensor (the filter estimates the rates), unless
+  // --rate-noise-radps also models a noisy rate-stabilised tracker.
+  if (o.no_rates || (!o.noise_rad.empty() && o.rate_noise_radps.empty()))
+    sc.apply_override("sensor.rates=false");
   if (o.runs < 0 || o.runs > 1000000) {
     throw std::invalid_argument("--runs = " + std::to_string(o.runs) + " outside [0, 1000000]");
   }
@@ -275,7 +278,9 @@ const bool kRegistered = evade::cli::register_command(
       app.add_option("--accel", o->accel_mps2, "maximum acceleration [m/s^2] (guidance.max_accel_mps2)");
       app.add_option("--detect", o->detect_s,
                      "detection time before the nominal closest approach [s]");
-      app.add_option("--noise-rad", o->noise_rad, "sensor angle noise 1-sigma [rad]");
+      app.add_option("--noise-rad", o->noise_rad,
+                     "angles-only sensor with this angle noise 1-sigma [rad] (keeps measured "
+                     "rates only if --rate-noise-radps is also given)");
       app.add_option("--rate-hz", o->rate_hz, "sensor sample rate [Hz]");
       app.add_option("--guidance-hz", o->guidance_hz, "guidance cycle rate [Hz] (guidance.rate_hz)");
       app.add_option("--rate-noise-radps", o->rate_noise_radps,
