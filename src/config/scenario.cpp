@@ -385,10 +385,24 @@ void Scenario::check_all_used() const {
     if (!known) unknown.push_back(leaf);
   }
   if (unknown.empty()) return;
-  std::vector<std::string> known_keys = used_keys_;
-  std::sort(known_keys.begin(), known_keys.end());
-  throw ConfigError(source_ + ": unknown key" + (unknown.size() > 1 ? "s '" : " '") + join(unknown, "', '") +
-                    "' (allowed keys: " + join(known_keys, ", ") + ")");
+  // For the first unknown key, list the allowed keys beside it (same parent), deeper levels
+  // folded as "name.…", so the message stays readable for large scenarios.
+  const std::string& first = unknown.front();
+  const auto dot = first.rfind('.');
+  const std::string parent = dot == std::string::npos ? "" : first.substr(0, dot + 1);
+  std::vector<std::string> siblings;
+  for (const auto& u : used_keys_) {
+    if (u.compare(0, parent.size(), parent) != 0) continue;
+    std::string rest = u.substr(parent.size());
+    const auto d = rest.find('.');
+    if (d != std::string::npos) rest = rest.substr(0, d) + ".…";
+    if (std::find(siblings.begin(), siblings.end(), rest) == siblings.end()) siblings.push_back(rest);
+  }
+  std::sort(siblings.begin(), siblings.end());
+  throw ConfigError(source_ + ": unknown key" + (unknown.size() > 1 ? "s '" : " '") +
+                    join(unknown, "', '") + "' (allowed " +
+                    (parent.empty() ? std::string("top-level keys") : "keys under '" + parent.substr(0, parent.size() - 1) + "'") +
+                    ": " + (siblings.empty() ? std::string("none") : join(siblings, ", ")) + ")");
 }
 
 }  // namespace evade::config
