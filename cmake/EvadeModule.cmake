@@ -47,3 +47,14 @@ function(evade_add_test name)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
     PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}" RUN_SERIAL ${serial})
 endfunction()
+
+# evade_add_cli_test(<name> <label> <expected_rc> <expected_text> <args>...)
+# Runs the real `evade` binary with <args> and checks its exit code and that its output
+# contains <expected_text> (test/cli/expect_cli.cmake).
+function(evade_add_cli_test name label expected_rc expected_text)
+  add_test(NAME ${name}
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:evade> -DEXPECT_RC=${expected_rc}
+            "-DEXPECT_TEXT=${expected_text}" "-DARGS=${ARGN}"
+            -P ${PROJECT_SOURCE_DIR}/test/cli/expect_cli.cmake)
+  set_tests_properties(${name} PROPERTIES TIMEOUT 120 LABELS "${label}")
+endfunction()
