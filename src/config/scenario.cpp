@@ -368,6 +368,40 @@ Vec3 Scenario::get_vec3(const std::string& key, double min, double max) const {
   return Vec3(v[0], v[1], v[2]);
 }
 
+double Scenario::get_param(const std::string& key, const ParamSpec& spec, double fallback) const {
+  const json* n = find(key);
+  if (n == nullptr) {
+    record(key, spec.type == ParamType::kBool ? json(fallback != 0.0) : json(fallback));
+    return fallback;
+  }
+  const std::string text = scalar_text(key, *n);
+  double v = 0.0;
+  bool parsed = false;
+  if (spec.type == ParamType::kBool) {
+    parsed = text == "true" || text == "false";
+    v = text == "true" ? 1.0 : 0.0;
+  } else if (spec.type == ParamType::kReal) {
+    parsed = parse_double_strict(text, v);
+  } else {  // integers: decimal digits only, exact in a double up to 2^53
+    char* end = nullptr;
+    errno = 0;
+    const long long i = std::strtoll(text.c_str(), &end, 10);
+    parsed = !text.empty() && end == text.c_str() + text.size() && errno != ERANGE;
+    v = static_cast<double>(i);
+  }
+  if (!parsed || !param_value_ok(spec, v)) {
+    throw ConfigError(source_ + ": " + param_error(key, text, spec));
+  }
+  if (spec.type == ParamType::kBool) {
+    record(key, v != 0.0);
+  } else if (spec.type == ParamType::kReal) {
+    record(key, v);
+  } else {
+    record(key, static_cast<long long>(v));
+  }
+  return v;
+}
+
 void Scenario::check_all_used() const {
   std::vector<std::string> leaves;
   collect_leaves(tree_, "", leaves);

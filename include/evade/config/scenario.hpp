@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evade/core/param.hpp"
 #include "evade/core/state.hpp"
 
 namespace evade::config {
@@ -65,6 +66,10 @@ class Scenario {
   /// A list of finite numbers in [min, max] (any length >= min_len).
   std::vector<double> get_double_list(const std::string& key, double min, double max,
                                       std::size_t min_len = 1) const;
+
+  /// A declared parameter (evade/core/param.hpp) at key: parsed by its type, checked against
+  /// its range, and reported with param_error()'s text; `fallback` when the key is absent.
+  double get_param(const std::string& key, const ParamSpec& spec, double fallback) const;
 
   /// Marks a key as known without reading it (e.g. a comment field).
   void mark_used(const std::string& key) const;

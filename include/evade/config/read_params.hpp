@@ -1,0 +1,43 @@
+// Reading a module's parameter table (evade/core/param.hpp) from a scenario: every row at
+// prefix + key, defaults from the struct passed in, ranges and error text from the table.
+// Earth constants are read here and nowhere else (read_earth).
+#pragma once
+
+#include <string>
+
+#include "evade/config/scenario.hpp"
+#include "evade/core/constants.hpp"
+#include "evade/core/param.hpp"
+
+namespace evade::config {
+
+/// For each row: cfg's field = sc[prefix + key] if present (checked), else left as it is.
+/// Throws ConfigError naming the key, the value and the allowed range.
+template <class Cfg>
+void read_params(const Scenario& sc, const std::string& prefix, const ParamTable<Cfg>& table,
+                 Cfg* cfg) {
+  for (const Param<Cfg>& p : table) {
+    p.set(*cfg, sc.get_param(prefix + p.spec.key, p.spec, p.get(*cfg)));
+  }
+}
+
+/// The Earth model under "earth." (mu_m3ps2, j2, re_m), defaults from `defaults`.
+EarthModel read_earth(const Scenario& sc, const EarthModel& defaults = kEarthDefault);
+
+/// A Markdown table of a module's parameters (key with prefix, unit, default, range,
+/// meaning), the defaults read from a default-constructed Cfg.
+template <class Cfg>
+std::string params_markdown(const std::string& prefix, const ParamTable<Cfg>& table,
+                            const Cfg& defaults = Cfg{}) {
+  std::string md = "| key | unit | default | allowed | meaning |\n|---|---|---|---|---|\n";
+  for (const Param<Cfg>& p : table) {
+    const double d = p.get(defaults);
+    std::string def = param_value_text(d);
+    if (p.spec.type == ParamType::kBool) def = d != 0.0 ? "true" : "false";
+    md += "| `" + prefix + p.spec.key + "` | " + p.spec.unit + " | " + def + " | " +
+          param_allowed_text(p.spec) + " | " + p.spec.meaning + " |\n";
+  }
+  return md;
+}
+
+}  // namespace evade::config
