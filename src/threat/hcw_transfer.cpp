@@ -1,6 +1,6 @@
 // HCW 2-impulse rendezvous in closed form and the primer-vector lower bound on the cost of
 // any impulsive rendezvous. Paper 001 (Yu, Wang, Sun 2017) sec. 2.1, eq. 1–3 (C-W transition
-// through impulses); the derivation of the bound is in evade/threat/rendezvous.hpp.
+// through impulses); the derivation of the bound is in evade/threat/hcw_transfer.hpp.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "evade/dynamics/hcw.hpp"
-#include "evade/threat/rendezvous.hpp"
+#include "evade/threat/hcw_transfer.hpp"
 
 namespace evade::threat {
 namespace {

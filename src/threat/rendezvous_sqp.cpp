@@ -1,7 +1,7 @@
 // N-impulse (N = 2..4) minimum-total-Δv HCW rendezvous with fixed transfer time, solved by
 // SQP (NLopt LD_SLSQP) with analytic gradients. Paper 001 (Yu, Wang, Sun 2017) sec. 2.1,
 // eq. 3 (min Σ|Δv_k| over impulse times and vectors, fixed t0/tf and boundary states); the
-// paper uses SQP too. Formulation, gradient derivation and smoothing: see rendezvous.hpp.
+// paper uses SQP too. Formulation, gradient derivation and smoothing: see rendezvous_sqp.hpp.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,7 +11,7 @@
 #include <nlopt.hpp>
 
 #include "evade/dynamics/hcw.hpp"
-#include "evade/threat/rendezvous.hpp"
+#include "evade/threat/rendezvous_sqp.hpp"
 
 namespace evade::threat {
 namespace {

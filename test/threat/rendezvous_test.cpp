@@ -9,7 +9,8 @@
 #include <nlopt.hpp>
 
 #include "evade/dynamics/hcw.hpp"
-#include "evade/threat/rendezvous.hpp"
+#include "evade/threat/hcw_transfer.hpp"
+#include "evade/threat/rendezvous_sqp.hpp"
 #include "seed1_geometry.hpp"
 
 namespace evade::threat {

@@ -26,7 +26,8 @@
 #include <vector>
 
 #include "evade/core/state.hpp"
-#include "evade/threat/rendezvous.hpp"
+#include "evade/threat/hcw_transfer.hpp"
+#include "evade/threat/rendezvous_sqp.hpp"
 
 namespace evade::threat {
 

@@ -1,11 +1,11 @@
-// Chaser rendezvous in HCW relative motion: the 2-impulse closed form, a primer-vector lower
-// bound on the cost of ANY impulsive rendezvous, and the N-impulse (N = 2..4)
-// minimum-total-Δv rendezvous with fixed transfer time solved by SQP.
+// Chaser rendezvous in HCW relative motion with fixed transfer time: the 2-impulse closed
+// form and lower bounds (primer vector, dual) on the cost of ANY impulsive rendezvous. The
+// N-impulse SQP built on these quantities is in evade/threat/rendezvous_sqp.hpp.
 //
 // Paper 001 (Yu, Wang, Sun 2017, "Optimal evasive maneuver strategy with potential
-// threatening area being considered"), sec. 2.1: the chaser's N-impulse optimal rendezvous
-// (eq. 1: state after impulses through the C-W transition matrix; eq. 2: total Δv; eq. 3:
-// min Σ|Δv_k| with fixed t0, tf and boundary states), solved by SQP.
+// threatening area being considered"), sec. 2.1: the chaser's rendezvous through impulses
+// (eq. 1: state after impulses through the C-W transition matrix; eq. 2: total Δv). The
+// lower bounds below are ours (weak duality, Neustadt 1964), used to decide threat points.
 //
 // Notation (RSW frame of the reference orbit, see evade/dynamics/hcw.hpp). Transfer time T,
 // chaser state x0 at the transfer start, required final state xf. The REQUIRED CHANGE is
@@ -41,17 +41,6 @@
 // the same certified sampling margin as above, so the result is a rigorous lower bound
 // whatever the iteration does (it is only more or less tight); the best score is kept and
 // is never below the 2-impulse primer bound.
-//
-// N impulses (SQP). Variables: the N−2 intermediate times τ_i ∈ [0, T] and impulses Δv_i;
-// the first (τ = 0) and last (τ = T) impulses are the 2-impulse solution of the residual
-// e = d − Σ B(T−τ_i)Δv_i. With J = φ(Δv1) + Σ φ(Δv_i) + φ(ΔvN), φ(v) = √(|v|²+ε²) − ε (a
-// smoothing of |v| at 0; φ ≤ |v| ≤ φ + ε) and g_k = ∇φ(Δv_k):
-//     ∂J/∂e = λ (same formula as the primer, with g in place of u),
-//     ∂J/∂Δv_i = g_i − B(T−τ_i)ᵀ λ,   ∂J/∂τ_i = λᵀ B'(T−τ_i) Δv_i,
-// B'(s) = [Φvv(s); Φvv'(s)]. NLopt LD_SLSQP minimizes J from several starts (the primer's
-// maximum and uniform times); the reported cost is the exact Σ|Δv| of the best plan, so any
-// result is a feasible plan (an upper bound of the true optimum); local optima are possible,
-// which is why the starts are several and the tests compare against brute force.
 #pragma once
 
 #include <array>
@@ -125,7 +114,7 @@ class HcwTransfer {
   /// Residual of a plan: Σ B(T−τ_i)Δv_i − d (zero for a valid rendezvous).
   Vec6 plan_residual(const RendezvousPlan& plan, const Vec6& d) const;
 
-  // Internals shared with the SQP (rendezvous_sqp.cpp).
+  // Internals shared with the SQP (rendezvous_sqp.hpp).
   const Mat3& phi_rv_T() const { return rv_T_; }
   const Mat3& phi_vv_T() const { return vv_T_; }
   const Mat3& phi_rv_T_inv() const { return rv_T_inv_; }
@@ -137,32 +126,5 @@ class HcwTransfer {
   std::array<Mat3, kPrimerSamples + 1> rv_s_;  // Φrv(s_j), s_j = T − τ_j, τ_j = j T / M
   std::array<Mat3, kPrimerSamples + 1> vv_s_;
 };
-
-/// Options of the N-impulse SQP.
-struct SqpOptions {
-  int impulses = 3;               ///< N, 2..4
-  int starts = 4;                 ///< number of SLSQP starts (≥ 1)
-  double smoothing_mps = 1e-4;    ///< ε of φ(v) = √(|v|²+ε²) − ε
-  double xtol_rel = 1e-10;
-  double ftol_abs = 1e-9;         ///< [m/s]
-  int max_eval_per_start = 400;
-  /// Decision mode: stop as soon as a plan with exact cost ≤ this is found; < 0 disables.
-  double stop_at_cost_mps = -1.0;
-  /// Decision mode only: after the first start (at the primer's maximum), run the other
-  /// starts only if the best cost is within this of stop_at_cost_mps. Over 13 803 undecided
-  /// sweep points of the seed1 scenario the first start was never worse than 16 starts by
-  /// more than 0.023 m/s, so 1 m/s keeps every close call fully searched.
-  double decision_margin_mps = 1.0;
-};
-
-/// Minimum-total-Δv N-impulse rendezvous with fixed transfer time: first impulse at 0, last at
-/// T, intermediate times free. Throws std::invalid_argument for N outside 2..4 or a non-finite
-/// d. The result is never worse than the 2-impulse plan.
-RendezvousPlan optimize_rendezvous(const HcwTransfer& tr, const Vec6& d, const SqpOptions& opt);
-
-/// Exact cost Σ|Δv| and the SLSQP objective for the given variables (exposed for tests of
-/// the analytic gradient): vars = [τ_2..τ_{N−1}, Δv_2..Δv_{N−1}]; returns the smoothed J.
-double sqp_objective(const HcwTransfer& tr, const Vec6& d, int impulses, double smoothing_mps,
-                     const std::vector<double>& vars, std::vector<double>* grad);
 
 }  // namespace evade::threat
