@@ -21,6 +21,21 @@ void read_params(const Scenario& sc, const std::string& prefix, const ParamTable
   }
 }
 
+/// Required keys: every row whose value in `cfg` is outside its range (a struct default that
+/// means "no default", such as 0 for a length) must be present at prefix + key. Call before
+/// read_params. Throws ConfigError naming the key and the allowed range.
+template <class Cfg>
+void require_params(const Scenario& sc, const std::string& prefix, const ParamTable<Cfg>& table,
+                    const Cfg& cfg) {
+  for (const Param<Cfg>& p : table) {
+    const std::string key = prefix + p.spec.key;
+    if (!param_value_ok(p.spec, p.get(cfg)) && !sc.has(key)) {
+      throw ConfigError(sc.source() + ": " + param_error(key, "<missing>", p.spec) +
+                        " (required key)");
+    }
+  }
+}
+
 /// The Earth model under "earth." (mu_m3ps2, j2, re_m), defaults from `defaults`.
 EarthModel read_earth(const Scenario& sc, const EarthModel& defaults = kEarthDefault);
 
