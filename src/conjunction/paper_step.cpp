@@ -6,10 +6,34 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace evade::conjunction {
 
+namespace {
+
+const Param<PaperStepParams> kPaperStepRows[] = {
+    EVADE_PARAM_REAL(PaperStepParams, h_sim_s, "s", 1e-6, 1e6, false,
+                     "h_sim: nominal (initial) simulation step"),
+    EVADE_PARAM_REAL(PaperStepParams, n_warning, "-", 1.0, 1e6, true,
+                     "N: warning radius R_CA = N R_c"),
+    EVADE_PARAM_REAL(PaperStepParams, m_warning_period, "-", 1.0, 1e6, true,
+                     "M: warning period T_CA = M h_now"),
+    EVADE_PARAM_REAL(PaperStepParams, l_enlarge, "-", 1.0, 1e6, true,
+                     "L_E: step growth factor when not approaching"),
+    EVADE_PARAM_REAL(PaperStepParams, l_reduce, "-", 1.0, 1e6, true,
+                     "L_D: step reduction factor inside the warning period"),
+};
+
+}  // namespace
+
+ParamTable<PaperStepParams> paper_step_params() noexcept {
+  return make_param_table(kPaperStepRows);
+}
+
 void PaperStepParams::validate() const {
+  const std::string bad = validate_params(paper_step_params(), *this, "paper_step.");
+  if (!bad.empty()) throw std::invalid_argument(bad);
   auto check = [](const char* key, double v, double lo, bool lo_open, const char* range) {
     if (!std::isfinite(v) || (lo_open ? !(v > lo) : !(v >= lo))) {
       std::ostringstream os;
@@ -17,11 +41,6 @@ void PaperStepParams::validate() const {
       throw std::invalid_argument(os.str());
     }
   };
-  check("h_sim_s", h_sim_s, 0.0, true, "(0, inf)");
-  check("n_warning", n_warning, 1.0, true, "(1, inf)");
-  check("m_warning_period", m_warning_period, 1.0, true, "(1, inf)");
-  check("l_enlarge", l_enlarge, 1.0, true, "(1, inf)");
-  check("l_reduce", l_reduce, 1.0, true, "(1, inf)");
   check("h_min_s", h_min_s, 0.0, true, "(0, h_sim_s]");
   if (h_min_s > h_sim_s) check("h_min_s", -1.0, 0.0, true, "(0, h_sim_s]");
 }

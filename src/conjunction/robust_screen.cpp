@@ -10,10 +10,12 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <utility>
 
 #include "evade/conjunction/ephemeris.hpp"
+#include "evade/core/earth_params.hpp"
 #include "evade/dynamics/events.hpp"
 
 namespace evade::conjunction {
@@ -315,23 +317,35 @@ struct Worker {
   }
 };
 
+const Param<ScreenOptions> kScreenOptionRows[] = {
+    EVADE_PARAM_REAL(ScreenOptions, threshold_m, "m", 0.0, 1e8, false,
+                     "D: report every closest approach with miss <= max(D, N R_c)"),
+    EVADE_PARAM_REAL(ScreenOptions, step_s, "s", 0.0, 1e5, false,
+                     "grid step h of the broad phase (0: auto_step_s(N))"),
+    EVADE_PARAM_REAL(ScreenOptions, leaf_s, "s", 1e-6, 1e5, false,
+                     "smallest subdivision of the narrow phase"),
+};
+
 }  // namespace
 
+ParamTable<ScreenOptions> screen_options_params() noexcept {
+  return make_param_table(kScreenOptionRows);
+}
+
 void ScreenOptions::validate() const {
+  const std::string bad = validate_params(screen_options_params(), *this, "robust.");
+  if (!bad.empty()) throw std::invalid_argument(bad);
   auto fail = [](const char* key, double v, const char* range) {
     std::ostringstream os;
     os << "screen." << key << " = " << v << " outside " << range;
     throw std::invalid_argument(os.str());
   };
-  if (!(threshold_m >= 0.0) || !std::isfinite(threshold_m)) fail("threshold_m", threshold_m, "[0, inf)");
   if (!(warning_multiple > 1.0) || !std::isfinite(warning_multiple))
     fail("warning_multiple", warning_multiple, "(1, inf)");
-  if (!(step_s >= 0.0) || !std::isfinite(step_s)) fail("step_s", step_s, "[0, inf), 0 = auto");
-  if (!(leaf_s > 0.0) || !std::isfinite(leaf_s)) fail("leaf_s", leaf_s, "(0, inf)");
   if (!(tca_tol_s > 0.0) || !std::isfinite(tca_tol_s)) fail("tca_tol_s", tca_tol_s, "(0, inf)");
   if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
-  if (!(earth.mu_m3ps2 > 0.0) || !std::isfinite(earth.mu_m3ps2))
-    fail("earth.mu_m3ps2", earth.mu_m3ps2, "(0, inf)");
+  const std::string bad_earth = validate_params(earth_params(), earth, "earth.");
+  if (!bad_earth.empty()) throw std::invalid_argument(bad_earth);
   integ.validate();
 }
 

@@ -25,6 +25,7 @@
 
 #include "evade/conjunction/ephemeris.hpp"
 #include "evade/conjunction/types.hpp"
+#include "evade/core/param.hpp"
 
 namespace evade::conjunction {
 
@@ -38,9 +39,14 @@ struct PaperStepParams {
   /// Reproduce the printed pseudo-code's defects, to show what they do (default: off).
   bool literal_sign = false;   ///< defect 1: "approaching" when dR.dV > 0
   bool literal_reset = false;  ///< defect 2: h_now = h_sim at every call
-  /// Throws std::invalid_argument naming the parameter, value and allowed range.
+  /// Throws std::invalid_argument naming the parameter, value and allowed range (the
+  /// table's rows as "paper_step.<key>").
   void validate() const;
 };
+
+/// The scenario's `paper_step.*` rows: h_sim_s, n_warning, m_warning_period, l_enlarge,
+/// l_reduce (h_min_s and the literal_* switches are not scenario keys).
+ParamTable<PaperStepParams> paper_step_params() noexcept;
 
 /// Geometry of one pair at one sample.
 struct PairSample {

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "evade/conjunction/types.hpp"
+#include "evade/core/param.hpp"
 #include "evade/dynamics/dop853.hpp"
 #include "evade/dynamics/gravity.hpp"
 
@@ -48,9 +49,14 @@ struct ScreenOptions {
   AdaptiveOptions integ = AdaptiveOptions::tight();  ///< J2 path only
   /// Called from the first worker with its fraction done in [0, 1] (may be empty).
   std::function<void(double)> progress;
-  /// Throws std::invalid_argument naming the option, value and allowed range.
+  /// Throws std::invalid_argument naming the option, value and allowed range (the table's
+  /// rows as "robust.<key>", the Earth model with the Earth table).
   void validate() const;
 };
+
+/// The scenario's `robust.*` rows of ScreenOptions: threshold_m, step_s, leaf_s (the other
+/// fields come from the command line, paper_step.n_warning and the Earth model).
+ParamTable<ScreenOptions> screen_options_params() noexcept;
 
 struct ScreenStats {
   long steps = 0;                 ///< grid steps
