@@ -64,114 +64,187 @@ double range_rate_product(const StateEci& si, const StateEci& sj) {
   return (sj.r_eci_m - si.r_eci_m).dot(sj.v_eci_mps - si.v_eci_mps);
 }
 
-// Narrow phase on one grid step for pair (i, j). Returns events through `out`.
+// Constants of one pair in the narrow phase.
+struct NarrowPair {
+  std::size_t i = 0;
+  std::size_t j = 0;
+  double a_crude = 0.0;  // g_i + g_j: crude bound on |rho''|
+  double r_min = 0.0;    // smaller lower bound on the two radii
+  double d_ij = 0.0;     // reporting distance of the pair
+  double rc = 0.0;       // collision radius R_c (eq. 1)
+};
+
+NarrowPair narrow_pair(std::size_t i, std::size_t j, double d_ij, const PairContext& ctx) {
+  const ObjectBounds& bi = (*ctx.bounds)[i];
+  const ObjectBounds& bj = (*ctx.bounds)[j];
+  NarrowPair p;
+  p.i = i;
+  p.j = j;
+  p.a_crude = bi.g_max_mps2 + bj.g_max_mps2;
+  p.r_min = std::min(bi.r_min_m, bj.r_min_m);
+  p.d_ij = d_ij;
+  p.rc = collision_radius_m((*ctx.objects)[i], (*ctx.objects)[j]);
+  return p;
+}
+
+// States of the pair at any time of the grid step, from the grid states gi, gj at t_grid.
+struct PairEphemeris {
+  Ephemeris* eph = nullptr;
+  std::size_t i = 0;
+  std::size_t j = 1;
+  const StateEci* gi = nullptr;
+  const StateEci* gj = nullptr;
+  double t_grid = 0.0;
+
+  Endpoint at(double t) const {
+    Endpoint e;
+    e.t = t;
+    e.si = eph->state_near(i, t, *gi, t_grid);
+    e.sj = eph->state_near(j, t, *gj, t_grid);
+    return e;
+  }
+};
+
+// Relative motion on one interval [a, b] and the bounds of robust_screen.hpp: R_max on
+// |rho| and A on |rho''| (the smaller of g_i + g_j and the gravity-gradient bound).
+struct IntervalGeometry {
+  double len = 0.0;
+  Vec3 rho_a, rho_b, vel_a, vel_b;
+  double r_max = 0.0;
+  double acc = 0.0;
+  double r_seg = 0.0;  // lower bound on the radius along the segment between the objects
+};
+
+IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const NarrowPair& p,
+                                   const ScreenOptions& opt) {
+  const double mu = opt.earth.mu_m3ps2;
+  const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
+  IntervalGeometry g;
+  g.len = b.t - a.t;
+  g.rho_a = a.sj.r_eci_m - a.si.r_eci_m;
+  g.rho_b = b.sj.r_eci_m - b.si.r_eci_m;
+  g.vel_a = a.sj.v_eci_mps - a.si.v_eci_mps;
+  g.vel_b = b.sj.v_eci_mps - b.si.v_eci_mps;
+  const double chord_dev_crude = p.a_crude * g.len * g.len / 8.0;
+  g.r_max = std::max(g.rho_a.norm(), g.rho_b.norm()) + chord_dev_crude;
+  // Gravity-gradient bound: |g(r_j) - g(r_i)| <= (2 mu / r^3) |rho| along the segment
+  // between the two objects, whose radius is >= r_min - r_max.
+  g.acc = p.a_crude;
+  g.r_seg = p.r_min - g.r_max;
+  if (g.r_seg > 0.0) {
+    const double r_seg = g.r_seg;
+    double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
+    if (j2) {
+      const double q = opt.earth.re_m / r_seg;
+      k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
+    }
+    g.acc = std::min(g.acc, k_grad * g.r_max);
+  }
+  return g;
+}
+
+// What is known of the range rate f = rho.rho' on [a, b]: increasing (at most one - to +
+// root) or decreasing (none).
+struct Monotonicity {
+  bool monotone = false;
+  bool decreasing = false;
+};
+
+Monotonicity range_rate_monotonicity(const Endpoint& a, const Endpoint& b,
+                                     const IntervalGeometry& g, const NarrowPair& p,
+                                     const ScreenOptions& opt) {
+  const double mu = opt.earth.mu_m3ps2;
+  const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
+  const double len = g.len;
+  const double acc = g.acc;
+  const double r_max = g.r_max;
+  Monotonicity m;
+  // Test 1 (fast pairs): f' >= V_min^2 - R_max A > 0.
+  const double v_min = 0.5 * (g.vel_a.norm() + g.vel_b.norm() - acc * len);
+  m.monotone = v_min > 0.0 && v_min * v_min > r_max * acc;
+  if (m.monotone || !(g.r_seg > 0.0)) return m;
+  // Test 2 (slow pairs): f' = |rho'|^2 + rho.rho'' known at both ends, and
+  // |f''| = |3 rho'.rho'' + rho.rho'''| <= B with |rho'''| <= K |rho'| + L |rho| v_max,
+  // L = 24 mu / r^4 (norm of the third derivatives of mu/r) and v_max = sqrt(2 mu / r_min).
+  const double r_seg = g.r_seg;
+  double l_third = 24.0 * mu / (r_seg * r_seg * r_seg * r_seg);
+  double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
+  if (j2) {
+    const double q = opt.earth.re_m / r_seg;
+    l_third *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
+    k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
+  }
+  const double v_obj = std::sqrt(2.0 * mu / p.r_min);
+  const double v_rel_max = std::min(g.vel_a.norm(), g.vel_b.norm()) + acc * len;
+  const double b_f2 = 3.0 * v_rel_max * acc + r_max * (k_grad * v_rel_max + l_third * r_max * v_obj);
+  auto accel = [&](const Vec3& r) { return accel_eci_mps2(r, opt.gravity, opt.earth); };
+  const double dfa = g.vel_a.squaredNorm() + g.rho_a.dot(accel(a.sj.r_eci_m) - accel(a.si.r_eci_m));
+  const double dfb = g.vel_b.squaredNorm() + g.rho_b.dot(accel(b.sj.r_eci_m) - accel(b.si.r_eci_m));
+  const double slack = b_f2 * len;
+  // On [a, b]: f'(t) >= max(f'(a) - B (t-a), f'(b) - B (b-t)) >= (f'(a) + f'(b) - B len)/2
+  // and f'(t) <= (f'(a) + f'(b) + B len)/2.
+  m.monotone = dfa + dfb - slack > 0.0;
+  m.decreasing = dfa + dfb + slack < 0.0;
+  return m;
+}
+
+// The root of f in [a, b] (f(a) = fa < 0 <= fb = f(b)) by Brent's method: an event when its
+// miss is within d_ij.
+void record_closest_approach(const Endpoint& a, const Endpoint& b, double fa, double fb,
+                             const NarrowPair& p, const PairEphemeris& pe,
+                             const ScreenOptions& opt, std::vector<Conjunction>& out) {
+  auto f = [&](double t) {
+    const Endpoint e = pe.at(t);
+    return range_rate_product(e.si, e.sj);
+  };
+  const double tca = brent_root(f, a.t, b.t, fa, fb, opt.tca_tol_s, 200);
+  const Endpoint e = (tca == b.t) ? b : pe.at(tca);
+  const double miss = (e.sj.r_eci_m - e.si.r_eci_m).norm();
+  if (miss <= p.d_ij) {
+    Conjunction c;
+    c.i = p.i;
+    c.j = p.j;
+    c.tca_s = tca;
+    c.miss_m = miss;
+    c.rel_speed_mps = (e.sj.v_eci_mps - e.si.v_eci_mps).norm();
+    c.collision = miss <= p.rc;
+    c.warning = miss <= opt.warning_multiple * p.rc;
+    out.push_back(c);
+  }
+}
+
+// Narrow phase on one grid step for pair (i, j): branch and bound on [a, b] (see
+// robust_screen.hpp). Returns events through `out`.
 void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const Endpoint& end,
                   const StateEci& gi, const StateEci& gj, double t_grid, double d_ij,
                   const PairContext& ctx, Ephemeris& eph, std::vector<Conjunction>& out,
                   ScreenStats& st) {
-  const ObjectBounds& bi = (*ctx.bounds)[i];
-  const ObjectBounds& bj = (*ctx.bounds)[j];
   const ScreenOptions& opt = *ctx.opt;
-  const double mu = opt.earth.mu_m3ps2;
-  const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
-  const double a_crude = bi.g_max_mps2 + bj.g_max_mps2;
-  const double r_min = std::min(bi.r_min_m, bj.r_min_m);
-  const SpaceObject& oi = (*ctx.objects)[i];
-  const SpaceObject& oj = (*ctx.objects)[j];
-  const double rc = collision_radius_m(oi, oj);
-
-  auto state_pair = [&](double t) {
-    Endpoint e;
-    e.t = t;
-    e.si = eph.state_near(i, t, gi, t_grid);
-    e.sj = eph.state_near(j, t, gj, t_grid);
-    return e;
-  };
-
+  const NarrowPair p = narrow_pair(i, j, d_ij, ctx);
+  const PairEphemeris pe{&eph, i, j, &gi, &gj, t_grid};
   std::vector<std::pair<Endpoint, Endpoint>> stack;
   stack.emplace_back(start, end);
   while (!stack.empty()) {
     auto [a, b] = std::move(stack.back());
     stack.pop_back();
     ++st.refined;
-    const double len = b.t - a.t;
-    const Vec3 rho_a = a.sj.r_eci_m - a.si.r_eci_m;
-    const Vec3 rho_b = b.sj.r_eci_m - b.si.r_eci_m;
-    const Vec3 vel_a = a.sj.v_eci_mps - a.si.v_eci_mps;
-    const Vec3 vel_b = b.sj.v_eci_mps - b.si.v_eci_mps;
-    const double chord_dev_crude = a_crude * len * len / 8.0;
-    const double r_max = std::max(rho_a.norm(), rho_b.norm()) + chord_dev_crude;
-    // Gravity-gradient bound: |g(r_j) - g(r_i)| <= (2 mu / r^3) |rho| along the segment
-    // between the two objects, whose radius is >= r_min - r_max.
-    double acc = a_crude;
-    const double r_seg = r_min - r_max;
-    if (r_seg > 0.0) {
-      double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
-      if (j2) {
-        const double q = opt.earth.re_m / r_seg;
-        k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
-      }
-      acc = std::min(acc, k_grad * r_max);
-    }
-    const double lower_bound = segment_distance_m(rho_a, rho_b) - acc * len * len / 8.0;
+    const IntervalGeometry g = interval_geometry(a, b, p, opt);
+    const double lower_bound = segment_distance_m(g.rho_a, g.rho_b) - g.acc * g.len * g.len / 8.0;
     if (lower_bound > d_ij) continue;
-    const double fa = rho_a.dot(vel_a);
-    const double fb = rho_b.dot(vel_b);
-    // Test 1 (fast pairs): f' >= V_min^2 - R_max A > 0.
-    const double v_min = 0.5 * (vel_a.norm() + vel_b.norm() - acc * len);
-    bool monotone = v_min > 0.0 && v_min * v_min > r_max * acc;
-    bool decreasing = false;
-    if (!monotone && r_seg > 0.0) {
-      // Test 2 (slow pairs): f' = |rho'|^2 + rho.rho'' known at both ends, and
-      // |f''| = |3 rho'.rho'' + rho.rho'''| <= B with |rho'''| <= K |rho'| + L |rho| v_max,
-      // L = 24 mu / r^4 (norm of the third derivatives of mu/r) and v_max = sqrt(2 mu / r_min).
-      double l_third = 24.0 * mu / (r_seg * r_seg * r_seg * r_seg);
-      double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
-      if (j2) {
-        const double q = opt.earth.re_m / r_seg;
-        l_third *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
-        k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
-      }
-      const double v_obj = std::sqrt(2.0 * mu / r_min);
-      const double v_rel_max = std::min(vel_a.norm(), vel_b.norm()) + acc * len;
-      const double b_f2 = 3.0 * v_rel_max * acc + r_max * (k_grad * v_rel_max + l_third * r_max * v_obj);
-      auto accel = [&](const Vec3& r) { return accel_eci_mps2(r, opt.gravity, opt.earth); };
-      const double dfa = vel_a.squaredNorm() + rho_a.dot(accel(a.sj.r_eci_m) - accel(a.si.r_eci_m));
-      const double dfb = vel_b.squaredNorm() + rho_b.dot(accel(b.sj.r_eci_m) - accel(b.si.r_eci_m));
-      const double slack = b_f2 * len;
-      // On [a, b]: f'(t) >= max(f'(a) - B (t-a), f'(b) - B (b-t)) >= (f'(a) + f'(b) - B len)/2
-      // and f'(t) <= (f'(a) + f'(b) + B len)/2.
-      monotone = dfa + dfb - slack > 0.0;
-      decreasing = dfa + dfb + slack < 0.0;
-    }
-    if (decreasing) continue;  // f strictly decreasing: no - to + root, no closest approach
-    if (!monotone && len > opt.leaf_s) {
-      const double tm = a.t + 0.5 * len;
-      Endpoint m = state_pair(tm);
-      stack.emplace_back(m, b);
-      stack.emplace_back(a, std::move(m));
+    const Monotonicity m = range_rate_monotonicity(a, b, g, p, opt);
+    if (m.decreasing) continue;  // f strictly decreasing: no - to + root, no closest approach
+    if (!m.monotone && g.len > opt.leaf_s) {
+      const double tm = a.t + 0.5 * g.len;
+      Endpoint mid = pe.at(tm);
+      stack.emplace_back(mid, b);
+      stack.emplace_back(a, std::move(mid));
       continue;
     }
+    const double fa = g.rho_a.dot(g.vel_a);
+    const double fb = g.rho_b.dot(g.vel_b);
     if (!(fa < 0.0 && fb >= 0.0)) continue;
     ++st.root_solves;
-    auto f = [&](double t) {
-      const Endpoint e = state_pair(t);
-      return range_rate_product(e.si, e.sj);
-    };
-    const double tca = brent_root(f, a.t, b.t, fa, fb, opt.tca_tol_s, 200);
-    const Endpoint e = (tca == b.t) ? b : state_pair(tca);
-    const double miss = (e.sj.r_eci_m - e.si.r_eci_m).norm();
-    if (miss <= d_ij) {
-      Conjunction c;
-      c.i = i;
-      c.j = j;
-      c.tca_s = tca;
-      c.miss_m = miss;
-      c.rel_speed_mps = (e.sj.v_eci_mps - e.si.v_eci_mps).norm();
-      c.collision = miss <= rc;
-      c.warning = miss <= opt.warning_multiple * rc;
-      out.push_back(c);
-    }
+    record_closest_approach(a, b, fa, fb, p, pe, opt, out);
   }
 }
 
