@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "evade/core/frames.hpp"
 
@@ -21,12 +22,39 @@ StateEci sat_at(const FormationSpec& spec, const SatelliteId& x, double t_s,
   return propagate_with_burns(s0, {t_s}, burns, spec.earth, settings.integrator).front();
 }
 
+const Param<ConjunctionSpec> kConjunctionRows[] = {
+    EVADE_PARAM_REAL(ConjunctionSpec, tca_s, "s", 1.0, 30.0 * kSecondsPerDay, false,
+                     "time of closest approach from the scenario epoch"),
+    EVADE_PARAM_REAL(ConjunctionSpec, required_miss_m, "m", 1e-3, 1e5, false,
+                     "miss distance the maneuver must reach"),
+};
+
+const Param<ManeuverTiming> kManeuverRows[] = {
+    EVADE_PARAM_REAL(ManeuverTiming, burn_before_tca_s, "s", 1.0, 30.0 * kSecondsPerDay, false,
+                     "first burn this long before the TCA (paper: 18 h; at most tca_s)"),
+    EVADE_PARAM_REAL(ManeuverTiming, restore_after_tca_s, "s", 1.0, 30.0 * kSecondsPerDay, false,
+                     "restore burn this long after the TCA (paper: 12 h)"),
+    EVADE_PARAM_BOOL(ManeuverTiming, restore, "apply the restore burn (-delta_a)"),
+};
+
+template <class Cfg>
+void check_params(const ParamTable<Cfg>& table, const Cfg& c, const std::string& prefix) {
+  const std::string bad = validate_params(table, c, prefix);
+  if (!bad.empty()) throw std::invalid_argument(bad);
+}
+
 }  // namespace
 
+ParamTable<ConjunctionSpec> conjunction_spec_params() noexcept {
+  return make_param_table(kConjunctionRows);
+}
+
+ParamTable<ManeuverTiming> maneuver_timing_params() noexcept {
+  return make_param_table(kManeuverRows);
+}
+
 void ConjunctionSpec::validate() const {
-  if (!std::isfinite(tca_s) || !(tca_s > 0.0) || tca_s > 30.0 * kSecondsPerDay) {
-    fail("conjunction.tca_s", tca_s, "(0, 30 days]");
-  }
+  check_params(conjunction_spec_params(), *this, "conjunction.");
   if (!miss_rsw_m.allFinite() || miss_rsw_m.norm() > 1e5) {
     fail("conjunction.miss_rsw_m (norm)", miss_rsw_m.norm(), "finite, [0, 1e5] m");
   }
@@ -34,19 +62,15 @@ void ConjunctionSpec::validate() const {
     fail("conjunction.v_rel_rsw_mps (norm)", v_rel_rsw_mps.norm(),
          "finite, [10, 2e4] m/s (a fast encounter: the linear closest approach needs it)");
   }
-  if (!std::isfinite(required_miss_m) || !(required_miss_m > 0.0) || required_miss_m > 1e5) {
-    fail("conjunction.required_miss_m", required_miss_m, "(0, 1e5] m");
-  }
 }
 
 void ManeuverTiming::validate(double tca_s) const {
-  if (!std::isfinite(burn_before_tca_s) || !(burn_before_tca_s > 0.0) || burn_before_tca_s > tca_s) {
-    fail("maneuver.burn_before_tca_s", burn_before_tca_s,
-         "(0, tca_s = " + std::to_string(tca_s) + "] s (the burn cannot precede the epoch)");
-  }
-  if (!std::isfinite(restore_after_tca_s) || !(restore_after_tca_s > 0.0) ||
-      restore_after_tca_s > 30.0 * kSecondsPerDay) {
-    fail("maneuver.restore_after_tca_s", restore_after_tca_s, "(0, 30 days]");
+  check_params(maneuver_timing_params(), *this, "maneuver.");
+  if (burn_before_tca_s > tca_s) {
+    throw std::invalid_argument("key 'maneuver.burn_before_tca_s' = '" +
+                                param_value_text(burn_before_tca_s) +
+                                "' is invalid: expected at most conjunction.tca_s = " +
+                                param_value_text(tca_s) + " s (the burn cannot precede the epoch)");
   }
 }
 

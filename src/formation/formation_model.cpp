@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "evade/core/earth_params.hpp"
 #include "evade/core/elements.hpp"
 
 namespace evade::formation {
@@ -52,9 +53,8 @@ void FormationSpec::validate() const {
   check("raan_tolerance_rad", raan_tolerance_rad, 1e-12, kPi / 2, "(0, pi/2] rad");
   check("phase_tolerance_rad", phase_tolerance_rad, 1e-12, kPi / 2, "(0, pi/2] rad");
   check("horizon_days", horizon_days, 1e-6, 60.0, "(0, 60] day");
-  check("earth.mu_m3ps2", earth.mu_m3ps2, 1e13, 1e15, "[1e13, 1e15] m^3/s^2");
-  check("earth.j2", earth.j2, 0.0, 1e-2, "[0, 1e-2]");
-  check("earth.re_m", earth.re_m, 6e6, 7e6, "[6e6, 7e6] m");
+  const std::string bad_earth = validate_params(earth_params(), earth, "earth.");
+  if (!bad_earth.empty()) throw std::invalid_argument("formation: " + bad_earth);
   if (groups.size() < 2) fail("groups.size", static_cast<double>(groups.size()), "[2, inf)");
   if (reference_group >= groups.size()) {
     fail("reference_group", static_cast<double>(reference_group),

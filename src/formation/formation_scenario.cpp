@@ -3,20 +3,61 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "evade/config/read_params.hpp"
 
 namespace evade::formation {
+namespace {
 
-PlanInputs read_plan_inputs(const config::Scenario& sc) {
-  PlanInputs in;
-  FormationSpec& f = in.spec;
-  f.earth.mu_m3ps2 = sc.get_double("earth.mu_m3ps2", 1e13, 1e15, f.earth.mu_m3ps2);
-  f.earth.j2 = sc.get_double("earth.j2", 0.0, 1e-2, f.earth.j2);
-  f.earth.re_m = sc.get_double("earth.re_m", 6e6, 7e6, f.earth.re_m);
-  f.side_length_m = sc.get_double("formation.side_length_m", 1.0, 1e7);
-  f.box_delta_m = sc.get_double("formation.box_delta_m", 1e-3, f.side_length_m / 8.0);
-  f.raan_tolerance_rad = sc.get_double("formation.raan_tolerance_deg", 1e-9, 90.0) * kDegToRad;
-  f.phase_tolerance_rad = sc.get_double("formation.phase_tolerance_deg", 1e-9, 90.0) * kDegToRad;
-  f.horizon_days = sc.get_double("formation.horizon_days", 1e-3, 60.0);
+const Param<FormationParams> kFormationRows[] = {
+    EVADE_PARAM_REAL(FormationParams, side_length_m, "m", 1.0, 1e7, false,
+                     "L: side of the nominal equilateral triangle"),
+    EVADE_PARAM_REAL(FormationParams, box_delta_m, "m", 1e-3, 1e7 / 8.0, false,
+                     "control-box unit (at most side_length_m / 8)"),
+    EVADE_PARAM_REAL(FormationParams, raan_tolerance_deg, "deg", 1e-9, 90.0, false,
+                     "inter-group RAAN tolerance"),
+    EVADE_PARAM_REAL(FormationParams, phase_tolerance_deg, "deg", 1e-9, 90.0, false,
+                     "inter-group phase tolerance"),
+    EVADE_PARAM_REAL(FormationParams, horizon_days, "day", 1e-3, 60.0, false,
+                     "T: time until the next formation-keeping burn"),
+};
+
+const Param<PropagationParams> kPropagationRows[] = {
+    EVADE_PARAM_REAL(PropagationParams, rel_tol, "-", 1e-14, 1e-6, false,
+                     "DOP853 relative tolerance"),
+    EVADE_PARAM_REAL(PropagationParams, abs_tol_m, "m", 1e-12, 10.0, false,
+                     "DOP853 absolute tolerance (m and m/s)"),
+    EVADE_PARAM_INT(PropagationParams, samples_per_rev, "-", 8, 512,
+                    "samples per nodal period for the element averaging"),
+};
+
+// Required rows first (a missing key is named), then every row, checked.
+template <class Cfg>
+void read_table(const config::Scenario& sc, const std::string& prefix,
+                const ParamTable<Cfg>& table, Cfg* cfg) {
+  config::require_params(sc, prefix, table, *cfg);
+  config::read_params(sc, prefix, table, cfg);
+}
+
+void read_formation_scalars(const config::Scenario& sc, FormationSpec& f) {
+  FormationParams p;
+  read_table(sc, "formation.", formation_params(), &p);
+  if (p.box_delta_m > p.side_length_m / 8.0) {
+    throw config::ConfigError(
+        sc.source() + ": key 'formation.box_delta_m' = '" + param_value_text(p.box_delta_m) +
+        "' is invalid: expected at most formation.side_length_m / 8 = " +
+        param_value_text(p.side_length_m / 8.0) + " m");
+  }
+  f.side_length_m = p.side_length_m;
+  f.box_delta_m = p.box_delta_m;
+  f.raan_tolerance_rad = p.raan_tolerance_deg * kDegToRad;
+  f.phase_tolerance_rad = p.phase_tolerance_deg * kDegToRad;
+  f.horizon_days = p.horizon_days;
+}
+
+// formation.groups.N: unique names, nominal offsets and the three satellites' elements.
+std::vector<std::string> read_groups(const config::Scenario& sc, FormationSpec& f) {
   const std::size_t ng = sc.list_size("formation.groups");
   if (ng < 2) {
     throw config::ConfigError(sc.source() + ": key 'formation.groups' has " + std::to_string(ng) +
@@ -50,36 +91,54 @@ PlanInputs read_plan_inputs(const config::Scenario& sc) {
     }
     f.groups.push_back(gr);
   }
+  return names;
+}
+
+// The reference group and the threatened satellite, by name.
+void read_names(const config::Scenario& sc, const std::vector<std::string>& names,
+                PlanInputs& in) {
   const std::string ref = sc.get_enum("formation.reference_group", names);
   const std::string tg = sc.get_enum("conjunction.group", names);
-  for (std::size_t g = 0; g < ng; ++g) {
-    if (names[g] == ref) f.reference_group = g;
+  for (std::size_t g = 0; g < names.size(); ++g) {
+    if (names[g] == ref) in.spec.reference_group = g;
     if (names[g] == tg) in.threatened.group = g;
   }
   const std::string role = sc.get_enum("conjunction.satellite", {"chief", "deputy1", "deputy2"});
   in.threatened.role = role == "chief" ? Role::kChief
                                        : (role == "deputy1" ? Role::kDeputy1 : Role::kDeputy2);
+}
+
+}  // namespace
+
+ParamTable<FormationParams> formation_params() noexcept { return make_param_table(kFormationRows); }
+
+ParamTable<PropagationParams> propagation_params() noexcept {
+  return make_param_table(kPropagationRows);
+}
+
+PlanInputs read_plan_inputs(const config::Scenario& sc) {
+  PlanInputs in;
+  FormationSpec& f = in.spec;
+  f.earth = config::read_earth(sc);
+  read_formation_scalars(sc, f);
+  const std::vector<std::string> names = read_groups(sc, f);
+  read_names(sc, names, in);
   ConjunctionSpec& c = in.conjunction;
-  c.tca_s = sc.get_double("conjunction.tca_s", 1.0, 30.0 * kSecondsPerDay);
+  read_table(sc, "conjunction.", conjunction_spec_params(), &c);
   c.miss_rsw_m = sc.get_vec3("conjunction.miss_rsw_m", -1e5, 1e5);
   c.v_rel_rsw_mps = sc.get_vec3("conjunction.v_rel_rsw_mps", -2e4, 2e4);
-  c.required_miss_m = sc.get_double("conjunction.required_miss_m", 1e-3, 1e5);
-  ManeuverTiming& t = in.timing;
-  t.burn_before_tca_s = sc.get_double("maneuver.burn_before_tca_s", 1.0, c.tca_s, t.burn_before_tca_s);
-  t.restore_after_tca_s =
-      sc.get_double("maneuver.restore_after_tca_s", 1.0, 30.0 * kSecondsPerDay, t.restore_after_tca_s);
-  t.restore = sc.get_bool("maneuver.restore", t.restore);
-  PropagationSettings& ps = in.propagation;
-  ps.integrator.rel_tol = sc.get_double("propagation.rel_tol", 1e-14, 1e-6, ps.integrator.rel_tol);
-  ps.integrator.abs_tol = sc.get_double("propagation.abs_tol_m", 1e-12, 10.0, ps.integrator.abs_tol);
-  ps.samples_per_rev = static_cast<int>(
-      sc.get_int("propagation.samples_per_rev", 8, 512, ps.samples_per_rev));
+  read_table(sc, "maneuver.", maneuver_timing_params(), &in.timing);
+  PropagationParams pp;
+  read_table(sc, "propagation.", propagation_params(), &pp);
+  in.propagation.integrator.rel_tol = pp.rel_tol;
+  in.propagation.integrator.abs_tol = pp.abs_tol_m;
+  in.propagation.samples_per_rev = pp.samples_per_rev;
   // Cross-field checks (the same ones the library applies), reported as configuration errors.
   try {
     f.validate();
     c.validate();
-    t.validate(c.tca_s);
-    ps.validate();
+    in.timing.validate(c.tca_s);
+    in.propagation.validate();
   } catch (const std::invalid_argument& e) {
     throw config::ConfigError(sc.source() + ": " + e.what());
   }

@@ -1,9 +1,14 @@
 // Paper 003 scenario reading: the shipped seed3 scenarios load and every bad input (NaN,
-// negative box, T <= 0, unknown key, inconsistent timing) is rejected naming the key.
+// negative box, T <= 0, unknown key, inconsistent timing) is rejected naming the key; the
+// scalars go through their parameter tables (a missing required key is named, the Earth
+// model has the Earth table's one range).
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "evade/core/earth_params.hpp"
 #include "evade/formation/formation_scenario.hpp"
 
 namespace evade::formation {
@@ -56,6 +61,75 @@ TEST(FormationScenario, RejectsBadInput) {
   expect_config_error("formation.groups.1.name=Fbase", "formation.groups.1.name");
   expect_config_error("formation.box_size_m=5000", "formation.box_size_m");  // unknown key
   expect_config_error("propagation.samples_per_rev=4", "propagation.samples_per_rev");
+}
+
+// seed3.yaml's text without the line holding `key:` (the key then is missing).
+std::string seed3_text_without(const std::string& key) {
+  for (const std::string& dir : config::scenario_search_dirs()) {
+    std::ifstream f(dir + "/seed3.yaml");
+    if (!f) continue;
+    std::ostringstream out;
+    std::string line;
+    while (std::getline(f, line)) {
+      if (line.find(key + ":") == std::string::npos) out << line << "\n";
+    }
+    return out.str();
+  }
+  ADD_FAILURE() << "seed3.yaml not found";
+  return "";
+}
+
+TEST(FormationScenario, MissingRequiredScalarIsNamed) {
+  for (const std::string key : {"side_length_m", "horizon_days", "tca_s", "required_miss_m"}) {
+    const config::Scenario sc = config::Scenario::from_yaml_string(seed3_text_without(key), "t");
+    try {
+      (void)read_plan_inputs(sc);
+      ADD_FAILURE() << "accepted a scenario without " << key;
+    } catch (const config::ConfigError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("." + key + "'"), std::string::npos) << m;
+      EXPECT_NE(m.find("required"), std::string::npos) << m;
+    }
+  }
+}
+
+TEST(FormationScenario, TablesGiveTheRangesAndDefaults) {
+  expect_config_error("formation.box_delta_m=20000", "formation.box_delta_m");  // > L/8
+  expect_config_error("formation.raan_tolerance_deg=0", "formation.raan_tolerance_deg");
+  expect_config_error("conjunction.tca_s=.nan", "conjunction.tca_s");
+  expect_config_error("maneuver.restore=maybe", "maneuver.restore");
+  expect_config_error("propagation.rel_tol=1e-3", "propagation.rel_tol");
+  // One range for the Earth constants: the Earth table's (formation's own [6e6, 7e6] is gone).
+  expect_config_error("earth.re_m=2e7", "earth.re_m");
+  EXPECT_NO_THROW((void)read_plan_inputs(seed3_with("earth.re_m=5.9e6")));
+  // Defaults where the scenario is silent: those of the library structs.
+  EXPECT_EQ(PropagationParams{}.rel_tol, PropagationSettings{}.integrator.rel_tol);
+  EXPECT_EQ(PropagationParams{}.abs_tol_m, PropagationSettings{}.integrator.abs_tol);
+  EXPECT_EQ(PropagationParams{}.samples_per_rev, PropagationSettings{}.samples_per_rev);
+  const PlanInputs in = read_plan_inputs(seed3_with(""));
+  EXPECT_EQ(in.spec.earth.mu_m3ps2, kEarthDefault.mu_m3ps2);  // seed3 states no Earth model
+  EXPECT_EQ(in.propagation.samples_per_rev, 32);
+  EXPECT_EQ(in.propagation.integrator.rel_tol, 1e-10);
+  EXPECT_EQ(in.spec.raan_tolerance_rad, 0.01 * kDegToRad);
+}
+
+TEST(FormationScenario, LibraryStructsValidateWithTheSameTables) {
+  ConjunctionSpec c;  // no TCA, no required miss
+  try {
+    c.validate();
+    ADD_FAILURE() << "accepted an empty conjunction";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("conjunction.tca_s"), std::string::npos) << e.what();
+  }
+  ManeuverTiming t;
+  t.restore_after_tca_s = -1.0;
+  try {
+    t.validate(108000.0);
+    ADD_FAILURE() << "accepted restore_after_tca_s = -1";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("maneuver.restore_after_tca_s"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "evade/core/param.hpp"
 #include "evade/core/state.hpp"
 #include "evade/formation/burn_propagation.hpp"
 #include "evade/formation/limits.hpp"
@@ -37,15 +38,25 @@ struct ConjunctionSpec {
   Vec3 miss_rsw_m = Vec3::Zero();       ///< debris − satellite at the TCA, RSW axes [m]
   Vec3 v_rel_rsw_mps = Vec3::Zero();    ///< debris − satellite velocity, RSW axes [m/s]
   double required_miss_m = 0.0;         ///< miss distance to reach [m]
+  /// Throws std::invalid_argument naming the key ("conjunction.<key>"), value and range.
   void validate() const;
 };
+
+/// The scalar rows of ConjunctionSpec (scenario prefix "conjunction."): tca_s and
+/// required_miss_m, both without default (0 is outside their ranges: required keys).
+ParamTable<ConjunctionSpec> conjunction_spec_params() noexcept;
 
 struct ManeuverTiming {
   double burn_before_tca_s = 18.0 * 3600.0;    ///< paper: 18 h
   double restore_after_tca_s = 12.0 * 3600.0;  ///< paper: 12 h
   bool restore = true;                         ///< apply the restore burn (−Δa)
+  /// Throws std::invalid_argument naming the key ("maneuver.<key>"), value and range; the
+  /// burn cannot precede the epoch (burn_before_tca_s <= tca_s).
   void validate(double tca_s) const;
 };
+
+/// ManeuverTiming's rows (scenario prefix "maneuver."), defaults those of paper 003.
+ParamTable<ManeuverTiming> maneuver_timing_params() noexcept;
 
 struct Encounter {
   double miss_m = 0.0;          ///< closest-approach distance [m]

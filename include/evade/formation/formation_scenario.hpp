@@ -1,6 +1,8 @@
 // Reads paper 003's planning inputs (formation, conjunction, maneuver timing, propagation
-// settings) from a scenario file through the typed, range-checked getters of
-// config::Scenario. Keys (SI units or degrees in their names):
+// settings) from a scenario file: every scalar through a parameter table (the tables below,
+// conjunction_spec_params() and maneuver_timing_params() in decision.hpp, the Earth table
+// through config::read_earth), per-satellite elements, vectors and names through the typed
+// getters of config::Scenario. Keys (SI units or degrees in their names):
 //   earth.{mu_m3ps2, j2, re_m}                                   (optional, WGS-84 default)
 //   formation.{side_length_m, box_delta_m, raan_tolerance_deg, phase_tolerance_deg,
 //              horizon_days, reference_group}
@@ -13,11 +15,32 @@
 #pragma once
 
 #include "evade/config/scenario.hpp"
+#include "evade/core/param.hpp"
 #include "evade/formation/decision.hpp"
 #include "evade/formation/formation_model.hpp"
 #include "evade/formation/numerical_constraints.hpp"
 
 namespace evade::formation {
+
+/// The formation's scalars as the scenario states them (prefix "formation."; angles in
+/// degrees, converted into FormationSpec's radians). No defaults: required keys.
+struct FormationParams {
+  double side_length_m = 0.0;        ///< L
+  double box_delta_m = 0.0;          ///< Δ (also at most L/8: FormationSpec::validate)
+  double raan_tolerance_deg = 0.0;   ///< Ω_max
+  double phase_tolerance_deg = 0.0;  ///< Δφ_max
+  double horizon_days = 0.0;         ///< T
+};
+ParamTable<FormationParams> formation_params() noexcept;
+
+/// The propagation settings as the scenario states them (prefix "propagation."), defaults
+/// those of PropagationSettings.
+struct PropagationParams {
+  double rel_tol = PropagationSettings{}.integrator.rel_tol;  ///< DOP853 relative tolerance
+  double abs_tol_m = PropagationSettings{}.integrator.abs_tol;  ///< DOP853 absolute tolerance [m, m/s]
+  int samples_per_rev = PropagationSettings{}.samples_per_rev;
+};
+ParamTable<PropagationParams> propagation_params() noexcept;
 
 struct PlanInputs {
   FormationSpec spec;
