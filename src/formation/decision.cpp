@@ -112,6 +112,127 @@ double propagated_miss(const FormationSpec& spec, const SatelliteId& x, const Co
   return closest_approach(man, deb).miss_m;
 }
 
+namespace {
+
+// What a direction's solution needs besides the miss model.
+struct DecisionInputs {
+  const FormationSpec& spec;
+  const SatelliteId& x;
+  const LimitsResult& limits;
+  const ConjunctionSpec& conj;
+  const ManeuverTiming& timing;
+  const PropagationSettings& settings;
+
+  double miss(double delta_a_m) const {
+    return propagated_miss(spec, x, conj, timing, settings, delta_a_m);
+  }
+};
+
+// Linear model of the miss (decision.hpp): δr(Δa) = δr0 − g Δa, g from a propagated 1 m
+// probe, both projected normal to δv (P).
+struct MissModel {
+  Vec3 pr0;            // P δr0
+  Vec3 pg;             // P g
+  double target = 0.0; // required miss with a 1e-4 relative margin [m]
+};
+
+MissModel miss_model(const DecisionInputs& in, const StateEci& nominal, const StateEci& deb,
+                     double burn_time_s) {
+  const double probe_m = 1.0;
+  const StateEci probe =
+      sat_at(in.spec, in.x, in.conj.tca_s, {{burn_time_s, probe_m}}, in.settings);
+  const Vec3 g = (probe.r_eci_m - nominal.r_eci_m) / probe_m;
+  const Vec3 dv = deb.v_eci_mps - nominal.v_eci_mps;
+  const Vec3 vhat = dv.normalized();
+  auto perp = [&](const Vec3& v) -> Vec3 { return v - vhat * vhat.dot(v); };
+  MissModel mm;
+  mm.pr0 = perp(deb.r_eci_m - nominal.r_eci_m);
+  mm.pg = perp(g);
+  mm.target = in.conj.required_miss_m * (1.0 + 1e-4);
+  return mm;
+}
+
+// Smallest |Δa| in direction d (+1 raise, −1 lower) reaching the target: the quadratic's
+// root, then Newton steps on the propagated miss; the miss at the limit; the rows whose
+// limit the required Δa breaks.
+void solve_direction(DirectionOption& opt, double d, const MissModel& mm,
+                     const DecisionInputs& in, double nominal_miss_m) {
+  const Vec3& pr0 = mm.pr0;
+  const Vec3& pg = mm.pg;
+  const double target = mm.target;
+  const double qa = pg.squaredNorm();
+  const double qb = -2.0 * d * pr0.dot(pg);
+  const double qc = pr0.squaredNorm() - target * target;
+  const double disc = qb * qb - 4.0 * qa * qc;
+  if (!(qa > 0.0) || disc < 0.0) {
+    opt.required_delta_a_m = kNoLimit;
+  } else {
+    double xr = (-qb + std::sqrt(disc)) / (2.0 * qa);
+    double m = in.miss(d * xr);
+    for (int it = 0; it < 8 && m < target; ++it) {  // Newton on the propagated miss
+      const Vec3 rel = pr0 - pg * d * xr;
+      const double slope = -d * rel.dot(pg) / std::max(rel.norm(), 1e-9);
+      if (!(slope > 0.0)) break;
+      xr += (target - m) / slope + 1e-6 * xr;
+      m = in.miss(d * xr);
+    }
+    opt.required_delta_a_m = xr;
+    opt.miss_at_required_m = m;
+  }
+  const double lim = opt.limit_m;
+  opt.feasible = opt.required_delta_a_m <= lim;
+  if (std::isfinite(lim) && lim > 0.0) {
+    opt.miss_at_limit_m = in.miss(d * lim);
+  } else if (lim == 0.0) {
+    opt.miss_at_limit_m = nominal_miss_m;
+  } else {
+    opt.miss_at_limit_m = std::numeric_limits<double>::infinity();
+  }
+  for (const ConstraintLimit& row : in.limits.rows) {
+    const double rl = d > 0 ? row.raise_max_m : row.lower_max_m;
+    if (rl < opt.required_delta_a_m) opt.violated.push_back(row.def.name);
+  }
+}
+
+// The feasible direction with the smaller |Δa|, else the best trade-off at a limit; the
+// summary says which and why.
+void choose_direction(Decision& dec, double required_miss_m) {
+  std::ostringstream why;
+  const DirectionOption* pick = nullptr;
+  if (dec.raise.feasible && dec.lower.feasible) {
+    pick = dec.raise.required_delta_a_m <= dec.lower.required_delta_a_m ? &dec.raise : &dec.lower;
+    why << pick->direction << " by " << pick->required_delta_a_m
+        << " m: both directions are within the limits, this one needs the smaller change";
+  } else if (dec.raise.feasible || dec.lower.feasible) {
+    pick = dec.raise.feasible ? &dec.raise : &dec.lower;
+    const DirectionOption& other = dec.raise.feasible ? dec.lower : dec.raise;
+    why << pick->direction << " by " << pick->required_delta_a_m << " m (limit " << pick->limit_m
+        << " m); " << other.direction << " would need " << other.required_delta_a_m
+        << " m, beyond its limit " << other.limit_m << " m";
+  }
+  if (pick != nullptr) {
+    dec.feasible = true;
+    dec.direction = pick->direction;
+    dec.delta_a_m = (pick == &dec.raise ? 1.0 : -1.0) * pick->required_delta_a_m;
+    dec.predicted_miss_m = pick->miss_at_required_m;
+  } else {
+    // Infeasible: best trade-off = the direction whose limit gives the larger miss.
+    dec.feasible = false;
+    pick = dec.raise.miss_at_limit_m >= dec.lower.miss_at_limit_m ? &dec.raise : &dec.lower;
+    dec.direction = pick->direction;
+    dec.delta_a_m = (pick == &dec.raise ? 1.0 : -1.0) * pick->limit_m;
+    dec.predicted_miss_m = pick->miss_at_limit_m;
+    why << "INFEASIBLE: required miss " << required_miss_m << " m needs raise "
+        << dec.raise.required_delta_a_m << " m (limit " << dec.raise.limit_m << " m) or lower "
+        << dec.lower.required_delta_a_m << " m (limit " << dec.lower.limit_m
+        << " m); best trade-off within every constraint: " << pick->direction << " by "
+        << pick->limit_m << " m giving a miss of " << pick->miss_at_limit_m << " m";
+  }
+  dec.summary = why.str();
+}
+
+}  // namespace
+
 Decision decide(const FormationSpec& spec, const SatelliteId& x, const LimitsResult& limits,
                 const ConjunctionSpec& conj, const ManeuverTiming& timing,
                 const PropagationSettings& settings) {
@@ -141,86 +262,11 @@ Decision decide(const FormationSpec& spec, const SatelliteId& x, const LimitsRes
     return dec;
   }
 
-  // Linear model: δr(Δa) = δr0 − g Δa, g from a propagated 1 m probe.
-  const double probe_m = 1.0;
-  const StateEci probe = sat_at(spec, x, conj.tca_s, {{dec.burn_time_s, probe_m}}, settings);
-  const Vec3 g = (probe.r_eci_m - nominal.r_eci_m) / probe_m;
-  const Vec3 dv = deb.v_eci_mps - nominal.v_eci_mps;
-  const Vec3 vhat = dv.normalized();
-  auto perp = [&](const Vec3& v) -> Vec3 { return v - vhat * vhat.dot(v); };
-  const Vec3 pr0 = perp(deb.r_eci_m - nominal.r_eci_m);
-  const Vec3 pg = perp(g);
-  const double target = conj.required_miss_m * (1.0 + 1e-4);
-
-  auto solve = [&](DirectionOption& opt, double d) {
-    const double qa = pg.squaredNorm();
-    const double qb = -2.0 * d * pr0.dot(pg);
-    const double qc = pr0.squaredNorm() - target * target;
-    const double disc = qb * qb - 4.0 * qa * qc;
-    if (!(qa > 0.0) || disc < 0.0) {
-      opt.required_delta_a_m = kNoLimit;
-    } else {
-      double xr = (-qb + std::sqrt(disc)) / (2.0 * qa);
-      double m = propagated_miss(spec, x, conj, timing, settings, d * xr);
-      for (int it = 0; it < 8 && m < target; ++it) {  // Newton on the propagated miss
-        const Vec3 rel = pr0 - pg * d * xr;
-        const double slope = -d * rel.dot(pg) / std::max(rel.norm(), 1e-9);
-        if (!(slope > 0.0)) break;
-        xr += (target - m) / slope + 1e-6 * xr;
-        m = propagated_miss(spec, x, conj, timing, settings, d * xr);
-      }
-      opt.required_delta_a_m = xr;
-      opt.miss_at_required_m = m;
-    }
-    const double lim = opt.limit_m;
-    opt.feasible = opt.required_delta_a_m <= lim;
-    if (std::isfinite(lim) && lim > 0.0) {
-      opt.miss_at_limit_m = propagated_miss(spec, x, conj, timing, settings, d * lim);
-    } else if (lim == 0.0) {
-      opt.miss_at_limit_m = enc0.miss_m;
-    } else {
-      opt.miss_at_limit_m = std::numeric_limits<double>::infinity();
-    }
-    for (const ConstraintLimit& row : limits.rows) {
-      const double rl = d > 0 ? row.raise_max_m : row.lower_max_m;
-      if (rl < opt.required_delta_a_m) opt.violated.push_back(row.def.name);
-    }
-  };
-  solve(dec.raise, 1.0);
-  solve(dec.lower, -1.0);
-
-  std::ostringstream why;
-  const DirectionOption* pick = nullptr;
-  if (dec.raise.feasible && dec.lower.feasible) {
-    pick = dec.raise.required_delta_a_m <= dec.lower.required_delta_a_m ? &dec.raise : &dec.lower;
-    why << pick->direction << " by " << pick->required_delta_a_m
-        << " m: both directions are within the limits, this one needs the smaller change";
-  } else if (dec.raise.feasible || dec.lower.feasible) {
-    pick = dec.raise.feasible ? &dec.raise : &dec.lower;
-    const DirectionOption& other = dec.raise.feasible ? dec.lower : dec.raise;
-    why << pick->direction << " by " << pick->required_delta_a_m << " m (limit " << pick->limit_m
-        << " m); " << other.direction << " would need " << other.required_delta_a_m
-        << " m, beyond its limit " << other.limit_m << " m";
-  }
-  if (pick != nullptr) {
-    dec.feasible = true;
-    dec.direction = pick->direction;
-    dec.delta_a_m = (pick == &dec.raise ? 1.0 : -1.0) * pick->required_delta_a_m;
-    dec.predicted_miss_m = pick->miss_at_required_m;
-  } else {
-    // Infeasible: best trade-off = the direction whose limit gives the larger miss.
-    dec.feasible = false;
-    pick = dec.raise.miss_at_limit_m >= dec.lower.miss_at_limit_m ? &dec.raise : &dec.lower;
-    dec.direction = pick->direction;
-    dec.delta_a_m = (pick == &dec.raise ? 1.0 : -1.0) * pick->limit_m;
-    dec.predicted_miss_m = pick->miss_at_limit_m;
-    why << "INFEASIBLE: required miss " << conj.required_miss_m << " m needs raise "
-        << dec.raise.required_delta_a_m << " m (limit " << dec.raise.limit_m << " m) or lower "
-        << dec.lower.required_delta_a_m << " m (limit " << dec.lower.limit_m
-        << " m); best trade-off within every constraint: " << pick->direction << " by "
-        << pick->limit_m << " m giving a miss of " << pick->miss_at_limit_m << " m";
-  }
-  dec.summary = why.str();
+  const DecisionInputs in{spec, x, limits, conj, timing, settings};
+  const MissModel mm = miss_model(in, nominal, deb, dec.burn_time_s);
+  solve_direction(dec.raise, 1.0, mm, in, enc0.miss_m);
+  solve_direction(dec.lower, -1.0, mm, in, enc0.miss_m);
+  choose_direction(dec, conj.required_miss_m);
   // Δv of each burn from the propagation (vis-viva at the burn point).
   if (dec.delta_a_m != 0.0) {
     const StateEci s0 = state_from_mean_elements(spec.sat(x), spec.earth);
