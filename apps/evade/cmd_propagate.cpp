@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "cli.hpp"
+#include "evade/config/read_params.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/core/elements.hpp"
 #include "evade/core/epoch.hpp"
@@ -20,68 +22,104 @@ struct PropagateOptions {
   CommonOptions common;
 };
 
-int run_propagate(const PropagateOptions& o) {
-  const config::Scenario sc = load_scenario(o.common);
-  const CalendarUtc epoch = parse_calendar_utc(sc.get_string("epoch_utc", "2000-01-01 12:00:00"));
+// What the scenario asks for (read_earth for the Earth model; the orbit's elements and the
+// run's settings through typed reads: the a_m range depends on earth.re_m).
+struct PropagateInputs {
+  CalendarUtc epoch;
   EarthModel earth;
-  earth.mu_m3ps2 = sc.get_double("earth.mu_m3ps2", 1e13, 1e15, earth.mu_m3ps2);
-  earth.j2 = sc.get_double("earth.j2", 0.0, 1e-2, earth.j2);
-  earth.re_m = sc.get_double("earth.re_m", 1e6, 1e7, earth.re_m);
   OrbitalElements oe;
-  oe.a_m = sc.get_double("orbit.a_m", earth.re_m, 1e9);
+  double duration_s = 0.0;
+  std::string model_name;
+  GravityModel model = GravityModel::kTwoBodyJ2;
+  AdaptiveOptions opt;
+};
+
+PropagateInputs read_inputs(const config::Scenario& sc) {
+  PropagateInputs in;
+  in.epoch = parse_calendar_utc(sc.get_string("epoch_utc", "2000-01-01 12:00:00"));
+  in.earth = config::read_earth(sc);
+  OrbitalElements& oe = in.oe;
+  oe.a_m = sc.get_double("orbit.a_m", in.earth.re_m, 1e9);
   oe.e = sc.get_double("orbit.e", 0.0, 0.99);
   oe.i_rad = sc.get_double("orbit.i_deg", 0.0, 180.0) * kDegToRad;
   oe.raan_rad = sc.get_double("orbit.raan_deg", -360.0, 360.0) * kDegToRad;
   oe.argp_rad = sc.get_double("orbit.argp_deg", -360.0, 360.0) * kDegToRad;
   oe.true_anomaly_rad = sc.get_double("orbit.true_anomaly_deg", -360.0, 360.0) * kDegToRad;
-  if (oe.a_m * (1.0 - oe.e) <= earth.re_m)
+  if (oe.a_m * (1.0 - oe.e) <= in.earth.re_m)
     throw config::ConfigError(sc.source() + ": key 'orbit.a_m'/'orbit.e': perigee radius " +
                               std::to_string(oe.a_m * (1.0 - oe.e)) + " m is inside the Earth (re_m = " +
-                              std::to_string(earth.re_m) + ")");
-  const double duration_s = sc.get_double("propagation.duration_s", 1.0, 365.0 * kSecondsPerDay);
-  const std::string model_name = sc.get_enum("propagation.model", {"two-body", "two-body-j2"}, "two-body-j2");
-  AdaptiveOptions opt;
-  opt.rel_tol = sc.get_double("propagation.rel_tol", 1e-14, 1e-3, opt.rel_tol);
-  opt.abs_tol = sc.get_double("propagation.abs_tol", 1e-12, 1e3, opt.abs_tol);
-  sc.check_all_used();
+                              std::to_string(in.earth.re_m) + ")");
+  in.duration_s = sc.get_double("propagation.duration_s", 1.0, 365.0 * kSecondsPerDay);
+  in.model_name = sc.get_enum("propagation.model", {"two-body", "two-body-j2"}, "two-body-j2");
+  in.opt.rel_tol = sc.get_double("propagation.rel_tol", 1e-14, 1e-3, in.opt.rel_tol);
+  in.opt.abs_tol = sc.get_double("propagation.abs_tol", 1e-12, 1e3, in.opt.abs_tol);
+  in.model = in.model_name == "two-body" ? GravityModel::kTwoBody : GravityModel::kTwoBodyJ2;
+  return in;
+}
 
-  const GravityModel model = model_name == "two-body" ? GravityModel::kTwoBody : GravityModel::kTwoBodyJ2;
-  const StateEci s0 = state_from_elements(oe, earth.mu_m3ps2);
+struct PropagateResult {
+  StateEci s1;            ///< final state with the chosen model
+  StateEci s1_kepler;     ///< final state, two-body
   IntegrationStats stats;
-  const auto t0 = std::chrono::steady_clock::now();
-  const StateEci s1 = propagate_orbit(s0, duration_s, model, earth, opt, &stats);
-  const double runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const OrbitalElements oe1 = elements_from_state(s1, earth.mu_m3ps2);
-  const J2SecularRates rates = j2_secular_rates(oe.a_m, oe.e, oe.i_rad, earth);
-  const double d_raan_deg = wrap_pi(oe1.raan_rad - oe.raan_rad) * kRadToDeg;
-  const double secular_raan_deg = model == GravityModel::kTwoBodyJ2 ? rates.raan_dot_radps * duration_s * kRadToDeg : 0.0;
-  const StateEci s1_kepler = propagate_orbit(s0, duration_s, GravityModel::kTwoBody, earth);
+  double runtime_s = 0.0;
+  double d_raan_deg = 0.0;        ///< osculating RAAN change
+  double secular_raan_deg = 0.0;  ///< J2 secular prediction (0 for two-body)
+};
 
+PropagateResult propagate(const PropagateInputs& in) {
+  PropagateResult r;
+  const StateEci s0 = state_from_elements(in.oe, in.earth.mu_m3ps2);
+  const auto t0 = std::chrono::steady_clock::now();
+  r.s1 = propagate_orbit(s0, in.duration_s, in.model, in.earth, in.opt, &r.stats);
+  r.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const OrbitalElements oe1 = elements_from_state(r.s1, in.earth.mu_m3ps2);
+  const J2SecularRates rates = j2_secular_rates(in.oe.a_m, in.oe.e, in.oe.i_rad, in.earth);
+  r.d_raan_deg = wrap_pi(oe1.raan_rad - in.oe.raan_rad) * kRadToDeg;
+  r.secular_raan_deg = in.model == GravityModel::kTwoBodyJ2 ? rates.raan_dot_radps * in.duration_s * kRadToDeg : 0.0;
+  r.s1_kepler = propagate_orbit(s0, in.duration_s, GravityModel::kTwoBody, in.earth);
+  return r;
+}
+
+nlohmann::json result_json(const PropagateInputs& in, const PropagateResult& r,
+                           const config::Scenario& sc) {
   nlohmann::json j;
-  j["epoch_utc"] = format_calendar_utc(epoch);
-  j["end_utc"] = format_calendar_utc(calendar_from_seconds_since_j2000(seconds_since_j2000_from_calendar(epoch) + duration_s));
-  j["model"] = model_name;
-  j["r_eci_m"] = {s1.r_eci_m.x(), s1.r_eci_m.y(), s1.r_eci_m.z()};
-  j["v_eci_mps"] = {s1.v_eci_mps.x(), s1.v_eci_mps.y(), s1.v_eci_mps.z()};
-  j["delta_raan_deg"] = d_raan_deg;
-  j["secular_delta_raan_deg"] = secular_raan_deg;
-  j["j2_displacement_from_kepler_m"] = (s1.r_eci_m - s1_kepler.r_eci_m).norm();
-  j["steps"] = stats.steps_accepted;
-  j["rejected_steps"] = stats.steps_rejected;
-  j["rhs_evaluations"] = stats.rhs_evaluations;
-  j["runtime_s"] = runtime_s;
+  j["epoch_utc"] = format_calendar_utc(in.epoch);
+  j["end_utc"] = format_calendar_utc(calendar_from_seconds_since_j2000(seconds_since_j2000_from_calendar(in.epoch) + in.duration_s));
+  j["model"] = in.model_name;
+  j["r_eci_m"] = {r.s1.r_eci_m.x(), r.s1.r_eci_m.y(), r.s1.r_eci_m.z()};
+  j["v_eci_mps"] = {r.s1.v_eci_mps.x(), r.s1.v_eci_mps.y(), r.s1.v_eci_mps.z()};
+  j["delta_raan_deg"] = r.d_raan_deg;
+  j["secular_delta_raan_deg"] = r.secular_raan_deg;
+  j["j2_displacement_from_kepler_m"] = (r.s1.r_eci_m - r.s1_kepler.r_eci_m).norm();
+  j["steps"] = r.stats.steps_accepted;
+  j["rejected_steps"] = r.stats.steps_rejected;
+  j["rhs_evaluations"] = r.stats.rhs_evaluations;
+  j["runtime_s"] = r.runtime_s;
   j["parameters"] = sc.used();
+  return j;
+}
+
+void print_text(const PropagateInputs& in, const PropagateResult& r) {
+  const StateEci& s1 = r.s1;
+  std::printf("evade propagate: %s, %.0f s from %s\n", in.model_name.c_str(), in.duration_s, format_calendar_utc(in.epoch).c_str());
+  std::printf("  final r_eci_m  = [%.3f, %.3f, %.3f]\n", s1.r_eci_m.x(), s1.r_eci_m.y(), s1.r_eci_m.z());
+  std::printf("  final v_eci_mps = [%.6f, %.6f, %.6f]\n", s1.v_eci_mps.x(), s1.v_eci_mps.y(), s1.v_eci_mps.z());
+  std::printf("  RAAN change %.4f deg (J2 secular rate predicts %.4f deg; osculating, so short-period terms differ)\n",
+              r.d_raan_deg, r.secular_raan_deg);
+  std::printf("  position difference from pure two-body: %.1f m\n", (s1.r_eci_m - r.s1_kepler.r_eci_m).norm());
+  std::printf("  %ld steps (%ld rejected), %ld RHS evaluations, %.2f ms\n", r.stats.steps_accepted,
+              r.stats.steps_rejected, r.stats.rhs_evaluations, r.runtime_s * 1e3);
+}
+
+int run_propagate(const PropagateOptions& o) {
+  const config::Scenario sc = load_scenario(o.common);
+  const PropagateInputs in = read_inputs(sc);
+  sc.check_all_used();
+  const PropagateResult r = propagate(in);
   if (o.common.json) {
-    print_json(j);
+    print_json(result_json(in, r, sc));
   } else {
-    std::printf("evade propagate: %s, %.0f s from %s\n", model_name.c_str(), duration_s, j["epoch_utc"].get<std::string>().c_str());
-    std::printf("  final r_eci_m  = [%.3f, %.3f, %.3f]\n", s1.r_eci_m.x(), s1.r_eci_m.y(), s1.r_eci_m.z());
-    std::printf("  final v_eci_mps = [%.6f, %.6f, %.6f]\n", s1.v_eci_mps.x(), s1.v_eci_mps.y(), s1.v_eci_mps.z());
-    std::printf("  RAAN change %.4f deg (J2 secular rate predicts %.4f deg; osculating, so short-period terms differ)\n",
-                d_raan_deg, secular_raan_deg);
-    std::printf("  position difference from pure two-body: %.1f m\n", (s1.r_eci_m - s1_kepler.r_eci_m).norm());
-    std::printf("  %ld steps (%ld rejected), %ld RHS evaluations, %.2f ms\n", stats.steps_accepted,
-                stats.steps_rejected, stats.rhs_evaluations, runtime_s * 1e3);
+    print_text(in, r);
   }
   return 0;
 }
