@@ -194,7 +194,9 @@ PrimerBound HcwTransfer::dual_bound(const Vec6& d, const PrimerBound& primer,
   constexpr int kMaxCand = 14;
   std::array<int, kMaxCand> cand{};
   std::array<double, kMaxCand> w{};
-  std::array<Vec3, kMaxCand> v{};  // the last IRLS plan's impulses
+  std::array<Vec3, kMaxCand> v;  // the last IRLS plan's impulses
+  v.fill(Vec3::Zero());           // Eigen leaves v{} uninitialized: candidates added after
+                                  // the last IRLS step would merge garbage into the plan
   bool have_plan = false;
   int nc = 0;
   const double w_floor = 1e-9 * J2;
