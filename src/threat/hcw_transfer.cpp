@@ -18,6 +18,136 @@ Vec3 unit_or_zero(const Vec3& v) {
   return n > 0.0 ? Vec3(v / n) : Vec3::Zero();
 }
 
+constexpr int kSamples = HcwTransfer::kPrimerSamples;
+using Samples = std::array<Mat3, kSamples + 1>;
+
+// The IRLS's candidate impulse times (sample indices j, τ_j = jT/M), their weights, and the
+// last IRLS plan's impulses v_k.
+struct IrlsCandidates {
+  static constexpr int kMax = 14;
+  std::array<int, kMax> cand{};
+  std::array<double, kMax> w{};
+  std::array<Vec3, kMax> v;  // zero until an IRLS step sets it (Eigen does not initialize)
+  int nc = 0;
+  double w_floor = 0.0;
+
+  IrlsCandidates() { v.fill(Vec3::Zero()); }
+
+  // Adds sample j with weight max(wj, w_floor) unless it is out of range, present or full.
+  void add(int j, double wj) {
+    if (j < 0 || j > kSamples || nc >= kMax) return;
+    for (int k = 0; k < nc; ++k) {
+      if (cand[k] == j) return;
+    }
+    cand[nc] = j;
+    w[nc] = std::max(wj, w_floor);
+    ++nc;
+  }
+};
+
+// Weights start from the 2-impulse plan plus a small share at the primer's largest |p| and
+// its neighbours.
+IrlsCandidates initial_candidates(const Vec6& d, const PrimerBound& primer, const Mat3& rv_T_inv,
+                                  const Mat3& vv_T, double T) {
+  const double J2 = primer.two_impulse_cost_mps;
+  IrlsCandidates c;
+  c.w_floor = 1e-9 * J2;
+  const Vec3 dv1 = rv_T_inv * d.head<3>();
+  const Vec3 dv2 = d.tail<3>() - vv_T * dv1;
+  c.add(0, dv1.norm());
+  c.add(kSamples, dv2.norm());
+  const int jstar = static_cast<int>(std::lround(primer.primer_argmax_s / T * kSamples));
+  for (int dj = -1; dj <= 1; ++dj) c.add(jstar + dj, 0.05 * J2);
+  return c;
+}
+
+// S = Σ_k w_k B_k B_kᵀ, B_k = [Φrv(s_k); Φvv(s_k)].
+Mat6 weighted_gram(const IrlsCandidates& c, const Samples& rv_s, const Samples& vv_s) {
+  Mat6 S = Mat6::Zero();
+  for (int k = 0; k < c.nc; ++k) {
+    const Mat3& rv = rv_s[c.cand[k]];
+    const Mat3& vv = vv_s[c.cand[k]];
+    S.block<3, 3>(0, 0).noalias() += c.w[k] * rv * rv.transpose();
+    S.block<3, 3>(0, 3).noalias() += c.w[k] * rv * vv.transpose();
+    S.block<3, 3>(3, 3).noalias() += c.w[k] * vv * vv.transpose();
+  }
+  S.block<3, 3>(3, 0) = S.block<3, 3>(0, 3).transpose();
+  return S;
+}
+
+// Keeps λ = μ / pmax if its bound μᵀd / pmax beats the best so far.
+void keep_better_certificate(double num, double pmax, double argmax_s, PrimerBound& best) {
+  if (pmax > 0.0 && num > 0.0) {
+    const double lb = num / pmax;
+    if (lb > best.lower_bound_mps) {
+      best.lower_bound_mps = lb;
+      best.primer_max = best.two_impulse_cost_mps / lb;  // equivalent scaling of J2
+      best.primer_argmax_s = argmax_s;
+    }
+  }
+}
+
+// True when the IRLS has nothing to do: no cost to bound, bad input, no iterations, or (with
+// a stop) the primer bound already above the stop or the 2-impulse plan within it.
+bool settled(const Vec6& d, const PrimerBound& primer, double stop_above_mps, int max_iterations) {
+  const double J2 = primer.two_impulse_cost_mps;
+  if (J2 == 0.0 || !d.allFinite() || max_iterations <= 0) return true;
+  return stop_above_mps >= 0.0 && (primer.lower_bound_mps > stop_above_mps || J2 <= stop_above_mps);
+}
+
+// Close call: when the sampled bound is at or below the stop, the finer certification may
+// show max|p| < λᵀd/stop, i.e. a bound just above the stop.
+void certify_close_call(const HcwTransfer& tr, const Vec6& mu, double num, double stop_above_mps,
+                        PrimerBound& best) {
+  if (best.lower_bound_mps <= stop_above_mps && num > 0.0 &&
+      tr.certify_primer_below(mu, num / stop_above_mps)) {
+    best.lower_bound_mps = std::nextafter(stop_above_mps, 2.0 * stop_above_mps + 1.0);
+    best.primer_max = best.two_impulse_cost_mps / best.lower_bound_mps;
+  }
+}
+
+// IRLS step: v_k = w_k B_kᵀμ is feasible; its cost (returned) bounds the optimum from above.
+double irls_step(const Vec6& mu, const Samples& rv_s, const Samples& vv_s, IrlsCandidates& c) {
+  double primal = 0.0;
+  for (int k = 0; k < c.nc; ++k) {
+    const Vec3 pk =
+        rv_s[c.cand[k]].transpose() * mu.head<3>() + vv_s[c.cand[k]].transpose() * mu.tail<3>();
+    c.v[k] = c.w[k] * pk;
+    c.w[k] = std::max(c.w[k] * pk.norm(), c.w_floor);
+    primal += c.w[k];
+  }
+  return primal;
+}
+
+// Merges the interior impulses within ±2 samples of the largest one into one impulse at their
+// |v|-weighted mean time (first-order cost-neutral for nearby times), drops the others, and
+// closes the rendezvous exactly with the end impulses. Leaves `plan` empty without interior
+// impulses.
+void merged_three_impulse(const IrlsCandidates& c, const Vec6& d, double n, double T,
+                          const Mat3& rv_T_inv, const Mat3& vv_T, RendezvousPlan& plan) {
+  auto interior = [&](int k) { return c.cand[k] != 0 && c.cand[k] != kSamples; };
+  int top = -1;
+  for (int k = 0; k < c.nc; ++k) {
+    if (!interior(k)) continue;
+    if (top < 0 || c.v[k].norm() > c.v[top].norm()) top = k;
+  }
+  if (top < 0) return;
+  Vec3 dvm = Vec3::Zero();
+  double wsum = 0.0, tsum = 0.0;
+  for (int k = 0; k < c.nc; ++k) {
+    if (!interior(k) || std::abs(c.cand[k] - c.cand[top]) > 2) continue;
+    dvm += c.v[k];
+    wsum += c.v[k].norm();
+    tsum += c.v[k].norm() * (T * c.cand[k] / kSamples);
+  }
+  const double tm = wsum > 0.0 ? std::clamp(tsum / wsum, 0.0, T) : T * c.cand[top] / kSamples;
+  const HcwBlocks b = hcw_stm_blocks(n, T - tm);
+  const Vec3 e1 = rv_T_inv * (d.head<3>() - b.rv * dvm);
+  const Vec3 en = d.tail<3>() - b.vv * dvm - vv_T * e1;
+  plan.impulses = {{0.0, e1}, {tm, dvm}, {T, en}};
+  plan.cost_mps = e1.norm() + dvm.norm() + en.norm();
+}
+
 }  // namespace
 
 HcwTransfer::HcwTransfer(double n_radps, double transfer_s) : n_(n_radps), T_(transfer_s) {
@@ -184,108 +314,28 @@ PrimerBound HcwTransfer::dual_bound(const Vec6& d, const PrimerBound& primer,
                                     RendezvousPlan* three_impulse) const {
   if (three_impulse != nullptr) *three_impulse = RendezvousPlan{};
   PrimerBound best = primer;
-  const double J2 = best.two_impulse_cost_mps;
   const bool stopping = stop_above_mps >= 0.0;
-  if (J2 == 0.0 || !d.allFinite() || max_iterations <= 0) return best;
-  if (stopping && (best.lower_bound_mps > stop_above_mps || J2 <= stop_above_mps)) return best;
+  if (settled(d, best, stop_above_mps, max_iterations)) return best;
 
-  // Candidate impulse times: sample indices j (τ_j = jT/M); weights start from the 2-impulse
-  // plan plus a small share at the primer's largest |p| and its neighbours.
-  constexpr int kMaxCand = 14;
-  std::array<int, kMaxCand> cand{};
-  std::array<double, kMaxCand> w{};
-  std::array<Vec3, kMaxCand> v;  // the last IRLS plan's impulses
-  v.fill(Vec3::Zero());           // Eigen leaves v{} uninitialized: candidates added after
-                                  // the last IRLS step would merge garbage into the plan
+  IrlsCandidates c = initial_candidates(d, best, rv_T_inv_, vv_T_, T_);
   bool have_plan = false;
-  int nc = 0;
-  const double w_floor = 1e-9 * J2;
-  auto add = [&](int j, double wj) {
-    if (j < 0 || j > kPrimerSamples || nc >= kMaxCand) return;
-    for (int k = 0; k < nc; ++k) {
-      if (cand[k] == j) return;
-    }
-    cand[nc] = j;
-    w[nc] = std::max(wj, w_floor);
-    ++nc;
-  };
-  const Vec3 dv1 = rv_T_inv_ * d.head<3>();
-  const Vec3 dv2 = d.tail<3>() - vv_T_ * dv1;
-  add(0, dv1.norm());
-  add(kPrimerSamples, dv2.norm());
-  const int jstar = static_cast<int>(std::lround(best.primer_argmax_s / T_ * kPrimerSamples));
-  for (int dj = -1; dj <= 1; ++dj) add(jstar + dj, 0.05 * J2);
-
   for (int it = 0; it < max_iterations; ++it) {
-    Mat6 S = Mat6::Zero();
-    for (int k = 0; k < nc; ++k) {
-      const Mat3& rv = rv_s_[cand[k]];
-      const Mat3& vv = vv_s_[cand[k]];
-      S.block<3, 3>(0, 0).noalias() += w[k] * rv * rv.transpose();
-      S.block<3, 3>(0, 3).noalias() += w[k] * rv * vv.transpose();
-      S.block<3, 3>(3, 3).noalias() += w[k] * vv * vv.transpose();
-    }
-    S.block<3, 3>(3, 0) = S.block<3, 3>(0, 3).transpose();
-    const Vec6 mu = S.ldlt().solve(d);
+    const Vec6 mu = weighted_gram(c, rv_s_, vv_s_).ldlt().solve(d);
     if (!mu.allFinite()) break;
     // Score μ as a certificate: λ = μ / certified max|p|.
     int ja = 0;
     const double pmax = certified_primer_max(mu, &ja);
     const double num = mu.dot(d);
-    if (pmax > 0.0 && num > 0.0) {
-      const double lb = num / pmax;
-      if (lb > best.lower_bound_mps) {
-        best.lower_bound_mps = lb;
-        best.primer_max = J2 / lb;  // equivalent scaling of the 2-impulse cost
-        best.primer_argmax_s = T_ * ja / kPrimerSamples;
-      }
-    }
-    if (stopping && best.lower_bound_mps <= stop_above_mps && num > 0.0 &&
-        certify_primer_below(mu, num / stop_above_mps)) {
-      // Close call: the finer certification shows max|p| < λᵀd/ΔV, i.e. bound > stop.
-      best.lower_bound_mps = std::nextafter(stop_above_mps, 2.0 * stop_above_mps + 1.0);
-      best.primer_max = J2 / best.lower_bound_mps;
-    }
+    keep_better_certificate(num, pmax, T_ * ja / kPrimerSamples, best);
+    if (stopping) certify_close_call(*this, mu, num, stop_above_mps, best);
     if (stopping && best.lower_bound_mps > stop_above_mps) break;
-    // IRLS step: v_k = w_k B_kᵀμ is feasible; its cost bounds the optimum from above.
-    double primal = 0.0;
-    for (int k = 0; k < nc; ++k) {
-      const Vec3 pk =
-          rv_s_[cand[k]].transpose() * mu.head<3>() + vv_s_[cand[k]].transpose() * mu.tail<3>();
-      v[k] = w[k] * pk;
-      w[k] = std::max(w[k] * pk.norm(), w_floor);
-      primal += w[k];
-    }
+    const double primal = irls_step(mu, rv_s_, vv_s_, c);
     have_plan = true;
     if (stopping && primal <= stop_above_mps) break;  // a plan within the limit: no bound can pass
-    for (int dj = -1; dj <= 1; ++dj) add(ja + dj, 0.05 * primal);
+    for (int dj = -1; dj <= 1; ++dj) c.add(ja + dj, 0.05 * primal);
   }
   if (three_impulse != nullptr && have_plan) {
-    // Merge the interior impulses within ±2 samples of the largest one into one impulse at
-    // their |v|-weighted mean time (first-order cost-neutral for nearby times), drop the
-    // others, and close the rendezvous exactly with the end impulses.
-    int top = -1;
-    for (int k = 0; k < nc; ++k) {
-      if (cand[k] == 0 || cand[k] == kPrimerSamples) continue;
-      if (top < 0 || v[k].norm() > v[top].norm()) top = k;
-    }
-    if (top >= 0) {
-      Vec3 dvm = Vec3::Zero();
-      double wsum = 0.0, tsum = 0.0;
-      for (int k = 0; k < nc; ++k) {
-        if (cand[k] == 0 || cand[k] == kPrimerSamples || std::abs(cand[k] - cand[top]) > 2) continue;
-        dvm += v[k];
-        wsum += v[k].norm();
-        tsum += v[k].norm() * (T_ * cand[k] / kPrimerSamples);
-      }
-      const double tm = wsum > 0.0 ? std::clamp(tsum / wsum, 0.0, T_) : T_ * cand[top] / kPrimerSamples;
-      const HcwBlocks b = hcw_stm_blocks(n_, T_ - tm);
-      const Vec3 e1 = rv_T_inv_ * (d.head<3>() - b.rv * dvm);
-      const Vec3 en = d.tail<3>() - b.vv * dvm - vv_T_ * e1;
-      RendezvousPlan& pl = *three_impulse;
-      pl.impulses = {{0.0, e1}, {tm, dvm}, {T_, en}};
-      pl.cost_mps = e1.norm() + dvm.norm() + en.norm();
-    }
+    merged_three_impulse(c, d, n_, T_, rv_T_inv_, vv_T_, *three_impulse);
   }
   return best;
 }

@@ -4,6 +4,7 @@
 // paper uses SQP too. Formulation, gradient derivation and smoothing: see rendezvous_sqp.hpp.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -102,6 +103,66 @@ RendezvousPlan plan_from_vars(const HcwTransfer& tr, const Vec6& d, int m, const
   return plan;
 }
 
+void check_inputs(const Vec6& d, const SqpOptions& opt) {
+  if (opt.impulses < 2 || opt.impulses > 4) {
+    throw std::invalid_argument("optimize_rendezvous: impulses = " +
+                                std::to_string(opt.impulses) + " must be in [2, 4]");
+  }
+  if (!d.allFinite()) {
+    throw std::invalid_argument("optimize_rendezvous: required state change is not finite");
+  }
+  if (opt.starts < 1 || !(opt.smoothing_mps > 0.0)) {
+    throw std::invalid_argument("optimize_rendezvous: starts >= 1 and smoothing_mps > 0 needed");
+  }
+}
+
+// Start k: intermediate times (start 0's first at the primer's maximum, the others spread by
+// the golden ratio) with impulses of dv0_mps along the primer there.
+std::vector<double> start_point(const HcwTransfer& tr, const PrimerBound& pb, const Vec6& lambda,
+                                int m, int k, double dv0_mps) {
+  const double T = tr.transfer_s();
+  const double kGolden = 0.6180339887498949;
+  std::vector<double> x(static_cast<std::size_t>(4 * m));
+  for (int i = 0; i < m; ++i) {
+    double frac;
+    if (k == 0 && i == 0) {
+      frac = pb.primer_argmax_s / T;  // where |p| is largest: an added impulse pays most
+    } else {
+      frac = std::fmod((i + 1.0) / (m + 1.0) + k * kGolden, 1.0);
+    }
+    x[i] = std::clamp(frac * T, 0.0, T);
+    Vec3 pdir = tr.primer(lambda, x[i]);
+    if (pdir.norm() > 0.0) pdir.normalize();
+    const Vec3 dv0 = dv0_mps * pdir;
+    for (int c = 0; c < 3; ++c) x[m + 3 * i + c] = dv0(c);
+  }
+  return x;
+}
+
+// One SLSQP run from x within [lb, ub]; x ends at the last iterate (a valid plan even when
+// NLopt stops on round-off or another failure: its exact cost judges it).
+void run_slsqp(const Problem& prob, const SqpOptions& opt, const std::vector<double>& lb,
+               const std::vector<double>& ub, std::vector<double>& x) {
+  nlopt::opt o(nlopt::LD_SLSQP, static_cast<unsigned>(x.size()));
+  o.set_lower_bounds(lb);
+  o.set_upper_bounds(ub);
+  o.set_min_objective(nlopt_objective, const_cast<Problem*>(&prob));
+  o.set_xtol_rel(opt.xtol_rel);
+  o.set_ftol_abs(opt.ftol_abs);
+  o.set_maxeval(opt.max_eval_per_start);
+  if (std::isfinite(opt.stop_at_cost_mps) && opt.stop_at_cost_mps > 0.0) {
+    o.set_stopval(opt.stop_at_cost_mps - opt.impulses * opt.smoothing_mps);
+  }
+  double f = 0.0;
+  try {
+    o.optimize(x, f);
+  } catch (const nlopt::roundoff_limited&) {
+    // x holds the last iterate: still a valid plan, judged by its exact cost below.
+  } catch (const std::runtime_error&) {
+    // generic NLopt failure: x still holds a valid (if unconverged) plan.
+  }
+}
+
 }  // namespace
 
 double sqp_objective(const HcwTransfer& tr, const Vec6& d, int impulses, double smoothing_mps,
@@ -116,16 +177,7 @@ double sqp_objective(const HcwTransfer& tr, const Vec6& d, int impulses, double 
 }
 
 RendezvousPlan optimize_rendezvous(const HcwTransfer& tr, const Vec6& d, const SqpOptions& opt) {
-  if (opt.impulses < 2 || opt.impulses > 4) {
-    throw std::invalid_argument("optimize_rendezvous: impulses = " +
-                                std::to_string(opt.impulses) + " must be in [2, 4]");
-  }
-  if (!d.allFinite()) {
-    throw std::invalid_argument("optimize_rendezvous: required state change is not finite");
-  }
-  if (opt.starts < 1 || !(opt.smoothing_mps > 0.0)) {
-    throw std::invalid_argument("optimize_rendezvous: starts >= 1 and smoothing_mps > 0 needed");
-  }
+  check_inputs(d, opt);
   RendezvousPlan best = tr.two_impulse(d);
   const int m = opt.impulses - 2;
   if (m == 0 || best.cost_mps == 0.0) return best;
@@ -142,40 +194,9 @@ RendezvousPlan optimize_rendezvous(const HcwTransfer& tr, const Vec6& d, const S
     ub[i] = T;
   }
   const Problem prob{&tr, &d, m, opt.smoothing_mps};
-  const double kGolden = 0.6180339887498949;
   for (int k = 0; k < opt.starts; ++k) {
-    std::vector<double> x(nvar);
-    for (int i = 0; i < m; ++i) {
-      double frac;
-      if (k == 0 && i == 0) {
-        frac = pb.primer_argmax_s / T;  // where |p| is largest: an added impulse pays most
-      } else {
-        frac = std::fmod((i + 1.0) / (m + 1.0) + k * kGolden, 1.0);
-      }
-      x[i] = std::clamp(frac * T, 0.0, T);
-      Vec3 pdir = tr.primer(lambda, x[i]);
-      if (pdir.norm() > 0.0) pdir.normalize();
-      const Vec3 dv0 = 0.05 * best.cost_mps * pdir;
-      for (int c = 0; c < 3; ++c) x[m + 3 * i + c] = dv0(c);
-    }
-    nlopt::opt o(nlopt::LD_SLSQP, nvar);
-    o.set_lower_bounds(lb);
-    o.set_upper_bounds(ub);
-    o.set_min_objective(nlopt_objective, const_cast<Problem*>(&prob));
-    o.set_xtol_rel(opt.xtol_rel);
-    o.set_ftol_abs(opt.ftol_abs);
-    o.set_maxeval(opt.max_eval_per_start);
-    if (std::isfinite(opt.stop_at_cost_mps) && opt.stop_at_cost_mps > 0.0) {
-      o.set_stopval(opt.stop_at_cost_mps - opt.impulses * opt.smoothing_mps);
-    }
-    double f = 0.0;
-    try {
-      o.optimize(x, f);
-    } catch (const nlopt::roundoff_limited&) {
-      // x holds the last iterate: still a valid plan, judged by its exact cost below.
-    } catch (const std::runtime_error&) {
-      // generic NLopt failure: x still holds a valid (if unconverged) plan.
-    }
+    std::vector<double> x = start_point(tr, pb, lambda, m, k, 0.05 * best.cost_mps);
+    run_slsqp(prob, opt, lb, ub, x);
     RendezvousPlan cand = plan_from_vars(tr, d, m, x.data());
     if (std::isfinite(cand.cost_mps) && cand.cost_mps < best.cost_mps) best = std::move(cand);
     if (best.cost_mps <= opt.stop_at_cost_mps) break;

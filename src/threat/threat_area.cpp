@@ -30,6 +30,27 @@ Eigen::Matrix<double, 6, 3> impulse_matrix(double n, double t) {
   return m;
 }
 
+// Runs body(part) for part = 0..parts-1, parts 1.. on their own threads and part 0 on the
+// caller's; rethrows the first exception (in part order) after all have finished.
+template <class Body>
+void run_parts(int parts, const Body& body) {
+  std::vector<std::exception_ptr> errors(parts);
+  auto guarded = [&](int part) {
+    try {
+      body(part);
+    } catch (...) {
+      errors[part] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int p = 1; p < parts; ++p) pool.emplace_back(guarded, p);
+  guarded(0);
+  for (auto& th : pool) th.join();
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+}
+
 }  // namespace
 
 DecisionCounts& DecisionCounts::operator+=(const DecisionCounts& o) {
@@ -131,56 +152,33 @@ bool ThreatAreaSolver::threatening(const Vec6& d, DecisionCounts& counts) const 
   return false;
 }
 
-ThreatArea ThreatAreaSolver::evaluate(const Vec3& dv_e) const {
-  if (!dv_e.allFinite()) {
-    throw std::invalid_argument("threat area: evasion dv_rsw_mps is not finite");
-  }
+std::vector<char> ThreatAreaSolver::sweep_grid(const Vec3& dv_e,
+                                               std::vector<DecisionCounts>& counts) const {
   const long k = static_cast<long>(t_grid_.size());
   std::vector<char> threat(k, 0);
-  const int nthreads = static_cast<int>(std::min<long>(opt_.threads, k));
-  std::vector<DecisionCounts> counts(nthreads);
-  std::vector<std::exception_ptr> errors(nthreads);
-
   // Dynamic chunks: the costly points (near interval edges) are not evenly spread, so the
   // threads take the next chunk of 32 points when free. Each point's verdict is independent
   // of which thread decides it, so the result does not depend on the schedule.
   constexpr long kChunk = 32;
   std::atomic<long> next{0};
-  auto sweep = [&](int part) {
-    try {
-      for (long lo = next.fetch_add(kChunk); lo < k; lo = next.fetch_add(kChunk)) {
-        const long hi = std::min(k, lo + kChunk);
-        for (long i = lo; i < hi; ++i) {
-          const Vec6 d = w_grid_[i] + b_grid_[i] * dv_e;
-          threat[i] = threatening(d, counts[part]) ? 1 : 0;
-        }
+  run_parts(static_cast<int>(counts.size()), [&](int part) {
+    for (long lo = next.fetch_add(kChunk); lo < k; lo = next.fetch_add(kChunk)) {
+      const long hi = std::min(k, lo + kChunk);
+      for (long i = lo; i < hi; ++i) {
+        const Vec6 d = w_grid_[i] + b_grid_[i] * dv_e;
+        threat[i] = threatening(d, counts[part]) ? 1 : 0;
       }
-    } catch (...) {
-      errors[part] = std::current_exception();
     }
-  };
-  {
-    std::vector<std::thread> pool;
-    for (int p = 1; p < nthreads; ++p) pool.emplace_back(sweep, p);
-    sweep(0);
-    for (auto& th : pool) th.join();
-  }
-  for (const auto& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
+  });
+  return threat;
+}
 
-  ThreatArea out;
-  out.points = k;
-  for (long i = 0; i < k; ++i) out.threatening_points += threat[i];
-  out.grid_arc_s = out.threatening_points * opt_.step_s;
-
+std::vector<ThreatAreaSolver::Edge> ThreatAreaSolver::grid_intervals(
+    const std::vector<char>& threat, const Vec3& dv_e, DecisionCounts& counts,
+    std::vector<ThreatInterval>& intervals) const {
   // Runs of threatening points → intervals [first point, last point + step) in grid mode;
   // with refinement, each edge is bisected between the safe and the threatening neighbour.
-  struct Edge {
-    double safe_t, threat_t;  // bisect between these
-    std::size_t interval;
-    bool is_start;
-  };
+  const long k = static_cast<long>(threat.size());
   std::vector<Edge> edges;
   for (long i = 0; i < k;) {
     if (!threat[i]) {
@@ -189,51 +187,67 @@ ThreatArea ThreatAreaSolver::evaluate(const Vec3& dv_e) const {
     }
     long j = i;
     while (j + 1 < k && threat[j + 1]) ++j;
-    const std::size_t idx = out.intervals.size();
-    out.intervals.push_back({t_grid_[i], std::min(t_grid_[j] + opt_.step_s, opt_.span_s)});
+    const std::size_t idx = intervals.size();
+    intervals.push_back({t_grid_[i], std::min(t_grid_[j] + opt_.step_s, opt_.span_s)});
     if (opt_.edge_tol_s > 0.0) {
       if (i > 0) edges.push_back({t_grid_[i - 1], t_grid_[i], idx, true});
       if (j + 1 < k) {
         edges.push_back({t_grid_[j + 1], t_grid_[j], idx, false});
-      } else if (threatening(required_change(opt_.span_s, dv_e), counts[0])) {
-        out.intervals[idx].end_s = opt_.span_s;  // the window's end itself threatens
+      } else if (threatening(required_change(opt_.span_s, dv_e), counts)) {
+        intervals[idx].end_s = opt_.span_s;  // the window's end itself threatens
       } else {
         edges.push_back({opt_.span_s, t_grid_[j], idx, false});
       }
     }
     i = j + 1;
   }
-  if (!edges.empty()) {
-    const int ethreads = static_cast<int>(std::min<std::size_t>(nthreads, edges.size()));
-    const long ne = static_cast<long>(edges.size());
-    auto refine = [&](int part) {
-      try {
-        for (long e = ne * part / ethreads; e < ne * (part + 1) / ethreads; ++e) {
-          double s = edges[e].safe_t;
-          double th = edges[e].threat_t;
-          while (std::abs(s - th) > opt_.edge_tol_s) {
-            const double mid = 0.5 * (s + th);
-            if (threatening(required_change(mid, dv_e), counts[part])) {
-              th = mid;
-            } else {
-              s = mid;
-            }
-          }
-          ThreatInterval& iv = out.intervals[edges[e].interval];
-          (edges[e].is_start ? iv.start_s : iv.end_s) = 0.5 * (s + th);
-        }
-      } catch (...) {
-        errors[part] = std::current_exception();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int p = 1; p < ethreads; ++p) pool.emplace_back(refine, p);
-    refine(0);
-    for (auto& th : pool) th.join();
-    for (const auto& e : errors) {
-      if (e) std::rethrow_exception(e);
+  return edges;
+}
+
+double ThreatAreaSolver::bisect_edge(const Edge& edge, const Vec3& dv_e,
+                                     DecisionCounts& counts) const {
+  double s = edge.safe_t;
+  double th = edge.threat_t;
+  while (std::abs(s - th) > opt_.edge_tol_s) {
+    const double mid = 0.5 * (s + th);
+    if (threatening(required_change(mid, dv_e), counts)) {
+      th = mid;
+    } else {
+      s = mid;
     }
   }
+  return 0.5 * (s + th);
+}
+
+void ThreatAreaSolver::refine_edges(const std::vector<Edge>& edges, const Vec3& dv_e,
+                                    std::vector<DecisionCounts>& counts,
+                                    std::vector<ThreatInterval>& intervals) const {
+  if (edges.empty()) return;
+  const int ethreads = static_cast<int>(std::min<std::size_t>(counts.size(), edges.size()));
+  const long ne = static_cast<long>(edges.size());
+  run_parts(ethreads, [&](int part) {
+    for (long e = ne * part / ethreads; e < ne * (part + 1) / ethreads; ++e) {
+      ThreatInterval& iv = intervals[edges[e].interval];
+      (edges[e].is_start ? iv.start_s : iv.end_s) = bisect_edge(edges[e], dv_e, counts[part]);
+    }
+  });
+}
+
+ThreatArea ThreatAreaSolver::evaluate(const Vec3& dv_e) const {
+  if (!dv_e.allFinite()) {
+    throw std::invalid_argument("threat area: evasion dv_rsw_mps is not finite");
+  }
+  const long k = static_cast<long>(t_grid_.size());
+  const int nthreads = static_cast<int>(std::min<long>(opt_.threads, k));
+  std::vector<DecisionCounts> counts(nthreads);
+  const std::vector<char> threat = sweep_grid(dv_e, counts);
+
+  ThreatArea out;
+  out.points = k;
+  for (long i = 0; i < k; ++i) out.threatening_points += threat[i];
+  out.grid_arc_s = out.threatening_points * opt_.step_s;
+  const std::vector<Edge> edges = grid_intervals(threat, dv_e, counts[0], out.intervals);
+  refine_edges(edges, dv_e, counts, out.intervals);
   for (const auto& iv : out.intervals) out.arc_s += iv.end_s - iv.start_s;
   out.arc_deg = out.arc_s / period_s() * 360.0;
   for (const auto& c : counts) out.counts += c;

@@ -23,6 +23,7 @@
 // Interval edges are refined by bisection between a safe and a threatening sweep point.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "evade/core/state.hpp"
@@ -97,6 +98,25 @@ class ThreatAreaSolver {
   bool threatening(const Vec6& d, DecisionCounts& counts) const;
 
  private:
+  /// An interval edge to bisect between a safe and a threatening departure time.
+  struct Edge {
+    double safe_t, threat_t;
+    std::size_t interval;  ///< index in ThreatArea::intervals
+    bool is_start;
+  };
+  /// Verdict of every grid point (counts.size() threads, one DecisionCounts each).
+  std::vector<char> sweep_grid(const Vec3& dv_e, std::vector<DecisionCounts>& counts) const;
+  /// Runs of threatening points → intervals; the edges left to bisect (none if edge_tol_s = 0).
+  std::vector<Edge> grid_intervals(const std::vector<char>& threat, const Vec3& dv_e,
+                                   DecisionCounts& counts,
+                                   std::vector<ThreatInterval>& intervals) const;
+  /// The edge's time to within edge_tol_s.
+  double bisect_edge(const Edge& edge, const Vec3& dv_e, DecisionCounts& counts) const;
+  /// Bisects every edge (split over at most counts.size() threads) into `intervals`.
+  void refine_edges(const std::vector<Edge>& edges, const Vec3& dv_e,
+                    std::vector<DecisionCounts>& counts,
+                    std::vector<ThreatInterval>& intervals) const;
+
   ThreatGeometry geom_;
   ThreatOptions opt_;
   HcwTransfer tr_;
