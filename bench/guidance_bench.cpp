@@ -46,11 +46,11 @@ struct StepFeed {
     in.meas.valid = true;
     in.meas.elevation_rad = a.elevation_rad + 50e-6 * n(rng);
     in.meas.azimuth_rad = a.azimuth_rad + 50e-6 * n(rng);
-    in.meas.sigma_rad = 50e-6;
+    in.meas.sigma_angle_rad = 50e-6;
     in.meas.has_rates = (k % 2 == 0);
     in.meas.elevation_rate_radps = 0.0;
     in.meas.azimuth_rate_radps = 1e-3;
-    in.meas.rate_sigma_radps = 1e-5;
+    in.meas.sigma_rate_radps = 1e-5;
     return now;
   }
 };

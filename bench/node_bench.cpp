@@ -85,7 +85,7 @@ void report(benchmark::State& state, std::vector<double>& lat_us) {
 void BM_NodeCycleMemq(benchmark::State& state) {
   lcm_t* lcm = lcm_create("memq://");
   NodeConfig cfg;
-  cfg.stale_limit_s = 60.0;
+  cfg.guidance.stale_limit_s = 60.0;
   auto node_ptr = std::make_unique<GuidanceNode>(lcm, cfg);  // must die before lcm
   GuidanceNode& node = *node_ptr;
   CmdWaiter w;

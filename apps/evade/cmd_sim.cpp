@@ -21,15 +21,10 @@
 
 #include "cli.hpp"
 #include "evade/guidance/guidance_law.hpp"
+#include "evade/lcm_link/sim_lcm_endpoint.hpp"
 #include "evade/sim/monte_carlo.hpp"
 #include "evade/sim/sim_scenario.hpp"
 #include "evade/sim/simulator.hpp"
-#include "sim_endpoints.hpp"
-
-// Weak reference: apps/evade/sim_lcm_endpoint.cpp (guidance-lcm) provides the definition.
-// Without it the symbol resolves to null and --lcm reports "not built" (exit 2).
-__attribute__((weak)) std::unique_ptr<evade::sim::GuidanceEndpoint> make_lcm_endpoint(
-    const std::string& lcm_url, bool lockstep, double timeout_s);
 
 namespace {
 
@@ -107,7 +102,7 @@ void write_csv_row(std::ostream& os, const evade::sim::SimSample& s) {
   for (int i = 0; i < 3; ++i) os << ',' << s.status.e_theta_eci[i];
   os << ',' << evade::guidance::mode_name(s.cmd.mode) << ','
      << evade::guidance::reason_name(s.cmd.reason) << ',' << s.cmd.accel_mps2;
-  for (int i = 0; i < 3; ++i) os << ',' << s.cmd.dir_eci[i];
+  for (int i = 0; i < 3; ++i) os << ',' << s.cmd.u_eci[i];
   for (int i = 0; i < 3; ++i) os << ',' << s.accel_applied_eci_mps2[i];
   os << ',' << s.status.dv_used_mps << ',' << (s.status.fallback_direction ? 1 : 0) << '\n';
 }
@@ -146,7 +141,7 @@ int run_sim(const SimOptions& o) {
   // --noise-rad switches to an angles-only sensor (the filter estimates the rates), unless
   // --rate-noise-radps also models a noisy rate-stabilised tracker.
   if (o.no_rates || (!o.noise_rad.empty() && o.rate_noise_radps.empty()))
-    sc.apply_override("sensor.rates=false");
+    sc.apply_override("sensor.has_rates=false");
   if (o.runs < 0 || o.runs > 1000000) {
     throw std::invalid_argument("--runs = " + std::to_string(o.runs) + " outside [0, 1000000]");
   }
@@ -167,14 +162,9 @@ int run_sim(const SimOptions& o) {
 
   std::unique_ptr<sim::GuidanceEndpoint> endpoint;
   if (!o.lcm_url.empty()) {
-    if (make_lcm_endpoint == nullptr) {
-      std::fprintf(stderr,
-                   "evade sim: --lcm not built (apps/evade/sim_lcm_endpoint.cpp is missing)\n");
-      return 2;
-    }
-    endpoint = make_lcm_endpoint(o.lcm_url, o.lockstep, o.lcm_timeout_s);
+    endpoint = lcm_link::make_lcm_endpoint(o.lcm_url, o.lockstep, o.lcm_timeout_s);
   } else {
-    endpoint = sim::make_in_process_endpoint(cfg.guidance, cfg.armed);
+    endpoint = sim::make_in_process_endpoint(cfg.guidance, cfg.guidance.armed);
   }
 
   std::ofstream csv;
@@ -188,7 +178,7 @@ int run_sim(const SimOptions& o) {
   const sim::SimResult r = sim::run_simulation(cfg, *endpoint, cb);
   if (csv.is_open()) csv.close();
   if (!r.closest_approach_found) {
-    std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.max_duration_s);
+    std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.encounter.max_duration_s);
     return 1;
   }
 
@@ -213,12 +203,12 @@ int run_sim(const SimOptions& o) {
     j["filter_reinits"] = r.final_status.filter_reinits;
   }
   j["parameters"] = {{"accel_mps2", cfg.guidance.max_accel_mps2},
-                     {"detect_before_tca_s", cfg.detect_before_tca_s},
+                     {"detect_before_tca_s", cfg.encounter.detect_before_tca_s},
                      {"noise_rad", cfg.sensor.noise_rad},
                      {"sensor_rate_hz", cfg.sensor.rate_hz},
-                     {"sensor_rates", cfg.sensor.provide_rates},
+                     {"sensor_rates", cfg.sensor.has_rates},
                      {"rate_noise_radps", cfg.sensor.rate_noise_radps},
-                     {"guidance_rate_hz", cfg.guidance_rate_hz},
+                     {"guidance_rate_hz", cfg.guidance.rate_hz},
                      {"gravity", cfg.gravity == GravityModel::kTwoBody ? "two_body"
                                                                       : "two_body_j2"},
                      {"scenario", sc.source()}};

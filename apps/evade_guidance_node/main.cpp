@@ -46,6 +46,105 @@ LcmPtr open_lcm(const std::string& url) {
   return l;
 }
 
+void print_banner(const evade::node::NodeOptions& o, const evade::guidance_lcm::NodeConfig& c) {
+  std::fprintf(stderr, "evade_guidance_node: %s at %.6g Hz, %s, max accel %.6g m/s^2, stale %.6g s, "
+               "%s\n", o.lockstep ? "lockstep" : "fixed rate", c.guidance.rate_hz,
+               o.lcm_url.empty() ? "default LCM URL" : o.lcm_url.c_str(),
+               c.guidance.max_accel_mps2, c.guidance.stale_limit_s,
+               c.guidance.armed ? "armed" : "disarmed");
+}
+
+void print_summary(const evade::guidance_lcm::GuidanceNode& n, const char* why) {
+  const auto& c = n.counts();
+  const auto& cs = n.compute_stats();
+  std::fprintf(stderr,
+               "evade_guidance_node: stopped (%s) after %lld cycles; inputs %lld = consumed "
+               "%lld + rejected %lld + stale %lld + superseded %lld + dropped %lld; seq gaps "
+               "%lld; watchdog cycles %lld; overruns %lld; cycle p50 %.1f us p99 %.1f us max "
+               "%.1f us\n",
+               why, static_cast<long long>(n.cycles()), static_cast<long long>(c.received),
+               static_cast<long long>(c.consumed), static_cast<long long>(c.rejected),
+               static_cast<long long>(c.stale), static_cast<long long>(c.superseded),
+               static_cast<long long>(c.dropped), static_cast<long long>(c.seq_gaps),
+               static_cast<long long>(n.watchdog_cycles()),
+               static_cast<long long>(cs.overruns()), cs.quantile(0.5), cs.quantile(0.99),
+               cs.max_us());
+}
+
+nlohmann::json inputs_json(const evade::guidance_lcm::InputCounts& c) {
+  nlohmann::json j = {{"received", c.received},     {"consumed", c.consumed},
+                      {"rejected", c.rejected},     {"stale", c.stale},
+                      {"superseded", c.superseded}, {"dropped", c.dropped},
+                      {"seq_gaps", c.seq_gaps}};
+  nlohmann::json reasons = nlohmann::json::object();
+  for (int r = 1; r < static_cast<int>(evade::guidance_lcm::Reason::kCount); ++r) {
+    if (c.by_reason[r] != 0)
+      reasons[evade::guidance_lcm::reason_name(static_cast<evade::guidance_lcm::Reason>(r))] =
+          c.by_reason[r];
+  }
+  j["by_reason"] = reasons;
+  return j;
+}
+
+nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool lockstep,
+                          const evade::node::LoopResult& res) {
+  const auto& cs = n.compute_stats();
+  const auto& ws = n.wakeup_stats();
+  nlohmann::json j;
+  j["mode"] = lockstep ? "lockstep" : "fixed_rate";
+  j["rate_hz"] = n.config().guidance.rate_hz;
+  j["cycles"] = n.cycles();
+  j["overruns"] = cs.overruns();
+  j["inputs"] = inputs_json(n.counts());
+  j["watchdog_cycles"] = n.watchdog_cycles();
+  j["compute_us"] = {{"p50_last_1024", cs.quantile(0.5)},
+                     {"p99_last_1024", cs.quantile(0.99)},
+                     {"max", cs.max_us()}};
+  if (!res.wakeup_us.empty()) {
+    j["wakeup_latency_us"] = {{"samples", res.wakeup_us.size()},
+                              {"p50", quantile(res.wakeup_us, 0.5)},
+                              {"p99", quantile(res.wakeup_us, 0.99)},
+                              {"p999", quantile(res.wakeup_us, 0.999)},
+                              {"max", quantile(res.wakeup_us, 1.0)}};
+  } else {
+    j["wakeup_latency_us"] = {{"p50_last_1024", ws.quantile(0.5)},
+                              {"p99_last_1024", ws.quantile(0.99)},
+                              {"max", ws.max_us()}};
+  }
+  j["exit_reason"] = res.why;
+  return j;
+}
+
+void install_signal_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+// Opens LCM, runs the loop until it stops, reports. Returns the exit code.
+int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::NodeConfig& cfg) {
+  using namespace evade;
+  LcmPtr in = open_lcm(opts.lcm_url);
+  LcmPtr out;
+  if (!opts.out_lcm_url.empty()) out = open_lcm(opts.out_lcm_url);
+  guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get());
+  install_signal_handlers();
+  if (opts.realtime) node::try_realtime(opts.rt_priority);
+  if (!opts.quiet) print_banner(opts, cfg);
+  node::LoopLimits lim;
+  lim.max_cycles = opts.max_cycles;
+  lim.idle_exit_s = opts.idle_exit_s;
+  lim.progress = !opts.quiet;
+  const node::LoopResult res =
+      opts.lockstep ? node::run_lockstep(nodecore, lim, &g_stop)
+                    : node::run_fixed_rate(nodecore, cfg.guidance.rate_hz, lim, &g_stop);
+  if (!opts.quiet) print_summary(nodecore, res.why);
+  if (opts.stats_json) std::printf("%s\n", stats_json(nodecore, opts.lockstep, res).dump(2).c_str());
+  return res.exit_code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -61,7 +160,6 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
-
   guidance_lcm::NodeConfig cfg;
   try {
     cfg = node::make_node_config(opts);
@@ -69,87 +167,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
     return 2;
   }
-
   try {
-    LcmPtr in = open_lcm(opts.lcm_url);
-    LcmPtr out;
-    if (!opts.out_lcm_url.empty()) out = open_lcm(opts.out_lcm_url);
-    guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get());
-
-    struct sigaction sa {};
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
-
-    if (opts.realtime) node::try_realtime(opts.rt_priority);
-    if (!opts.quiet)
-      std::fprintf(stderr, "evade_guidance_node: %s, %s, max accel %.6g m/s^2, stale %.6g ms, "
-                   "%s\n", opts.lockstep ? "lockstep" : "fixed rate",
-                   opts.lcm_url.empty() ? "default LCM URL" : opts.lcm_url.c_str(),
-                   cfg.guidance.max_accel_mps2, cfg.stale_limit_s * 1e3,
-                   cfg.armed ? "armed" : "disarmed");
-
-    node::LoopLimits lim;
-    lim.max_cycles = opts.max_cycles;
-    lim.idle_exit_s = opts.idle_exit_s;
-    lim.progress = !opts.quiet;
-    node::LoopResult res = opts.lockstep
-                               ? node::run_lockstep(nodecore, lim, &g_stop)
-                               : node::run_fixed_rate(nodecore, opts.rate_hz, lim, &g_stop);
-
-    const auto& c = nodecore.counts();
-    const auto& cs = nodecore.compute_stats();
-    const auto& ws = nodecore.wakeup_stats();
-    if (!opts.quiet)
-      std::fprintf(stderr,
-                   "evade_guidance_node: stopped (%s) after %lld cycles; inputs %lld = consumed "
-                   "%lld + rejected %lld + stale %lld + superseded %lld + dropped %lld; seq gaps "
-                   "%lld; watchdog cycles %lld; overruns %lld; cycle p50 %.1f us p99 %.1f us max "
-                   "%.1f us\n",
-                   res.why, static_cast<long long>(nodecore.cycles()),
-                   static_cast<long long>(c.received), static_cast<long long>(c.consumed),
-                   static_cast<long long>(c.rejected), static_cast<long long>(c.stale),
-                   static_cast<long long>(c.superseded), static_cast<long long>(c.dropped),
-                   static_cast<long long>(c.seq_gaps),
-                   static_cast<long long>(nodecore.watchdog_cycles()),
-                   static_cast<long long>(cs.overruns()), cs.quantile(0.5), cs.quantile(0.99),
-                   cs.max_us());
-    if (opts.stats_json) {
-      nlohmann::json j;
-      j["mode"] = opts.lockstep ? "lockstep" : "fixed_rate";
-      j["rate_hz"] = opts.rate_hz;
-      j["cycles"] = nodecore.cycles();
-      j["overruns"] = cs.overruns();
-      j["inputs"] = {{"received", c.received},     {"consumed", c.consumed},
-                     {"rejected", c.rejected},     {"stale", c.stale},
-                     {"superseded", c.superseded}, {"dropped", c.dropped},
-                     {"seq_gaps", c.seq_gaps}};
-      nlohmann::json reasons = nlohmann::json::object();
-      for (int r = 1; r < static_cast<int>(guidance_lcm::Reason::kCount); ++r) {
-        if (c.by_reason[r] != 0)
-          reasons[guidance_lcm::reason_name(static_cast<guidance_lcm::Reason>(r))] = c.by_reason[r];
-      }
-      j["inputs"]["by_reason"] = reasons;
-      j["watchdog_cycles"] = nodecore.watchdog_cycles();
-      j["compute_us"] = {{"p50_last_1024", cs.quantile(0.5)},
-                         {"p99_last_1024", cs.quantile(0.99)},
-                         {"max", cs.max_us()}};
-      if (!res.wakeup_us.empty()) {
-        j["wakeup_latency_us"] = {{"samples", res.wakeup_us.size()},
-                                  {"p50", quantile(res.wakeup_us, 0.5)},
-                                  {"p99", quantile(res.wakeup_us, 0.99)},
-                                  {"p999", quantile(res.wakeup_us, 0.999)},
-                                  {"max", quantile(res.wakeup_us, 1.0)}};
-      } else {
-        j["wakeup_latency_us"] = {{"p50_last_1024", ws.quantile(0.5)},
-                                  {"p99_last_1024", ws.quantile(0.99)},
-                                  {"max", ws.max_us()}};
-      }
-      j["exit_reason"] = res.why;
-      std::printf("%s\n", j.dump(2).c_str());
-    }
-    return res.exit_code;
+    return run_node(opts, cfg);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
     return 2;

@@ -402,6 +402,26 @@ double Scenario::get_param(const std::string& key, const ParamSpec& spec, double
   return v;
 }
 
+std::uint64_t Scenario::get_seed(const std::string& key, std::uint64_t fallback) const {
+  const json* n = find(key);
+  if (n == nullptr) {
+    record(key, fallback);
+    return fallback;
+  }
+  const std::string text = scalar_text(key, *n);
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+  const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return c >= '0' && c <= '9';
+  });
+  if (!digits || end != text.c_str() + text.size() || errno == ERANGE) {
+    fail(key, text, "an unsigned 64-bit integer seed (decimal digits)");
+  }
+  record(key, static_cast<std::uint64_t>(v));
+  return static_cast<std::uint64_t>(v);
+}
+
 void Scenario::check_all_used() const {
   std::vector<std::string> leaves;
   collect_leaves(tree_, "", leaves);

@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "evade/core/constants.hpp"
+#include "evade/guidance/guidance_params.hpp"
 #include "evade/guidance/los_geometry.hpp"
 
 namespace evade::guidance {
@@ -43,100 +43,31 @@ const char* reason_name(CommandReason r) noexcept {
   return "unknown";
 }
 
-namespace {
-
-// Appends "GuidanceConfig.<key> = <v> outside <range>" if !ok.
-void check(std::ostringstream& err, bool ok, const char* key, double v, const char* range) {
-  if (ok || !err.str().empty()) return;  // report the first bad field
-  err << "GuidanceConfig." << key << " = " << v << " outside " << range;
-}
-
-bool in(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
-bool in_open_lo(double v, double lo, double hi) { return std::isfinite(v) && v > lo && v <= hi; }
-
-bool measurement_well_formed(const AnglesMeasurement& m) noexcept {
-  constexpr double kHalfPi = 0.5 * kPi;
-  if (!std::isfinite(m.elevation_rad) || std::abs(m.elevation_rad) > kHalfPi + 1e-9) return false;
-  if (!std::isfinite(m.azimuth_rad) || std::abs(m.azimuth_rad) > 2.0 * kTwoPi) return false;
-  if (!std::isfinite(m.sigma_rad) || m.sigma_rad < 0.0) return false;
-  if (m.has_rates) {
-    if (!std::isfinite(m.elevation_rate_radps) || !std::isfinite(m.azimuth_rate_radps)) {
-      return false;
-    }
-    if (!std::isfinite(m.rate_sigma_radps) || m.rate_sigma_radps < 0.0) return false;
-    // β̇ may be large near the pole, but β̇ cos ε (a LOS rate) must be finite and bounded.
-    if (!std::isfinite(m.azimuth_rate_radps * std::cos(m.elevation_rad))) return false;
-  }
-  if (m.has_range) {
-    if (!std::isfinite(m.range_m) || !(m.range_m > 0.0)) return false;
-    if (!std::isfinite(m.range_rate_mps)) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 std::string GuidanceConfig::validate() const {
-  std::ostringstream err;
-  check(err, in_open_lo(max_accel_mps2, 0.0, 100.0), "max_accel_mps2", max_accel_mps2,
-        "(0, 100]");
-  check(err, in_open_lo(dv_budget_mps, 0.0, 1e4), "dv_budget_mps", dv_budget_mps, "(0, 1e4]");
-  check(err, in_open_lo(max_burn_s, 0.0, 1e5), "max_burn_s", max_burn_s, "(0, 1e5]");
-  check(err, in_open_lo(stale_limit_s, 0.0, 60.0), "stale_limit_s", stale_limit_s, "(0, 60]");
-  check(err, in_open_lo(nominal_cycle_s, 0.0, 10.0), "nominal_cycle_s", nominal_cycle_s,
-        "(0, 10]");
-  check(err, in(rate_noise_threshold_radps, 0.0, 1.0), "rate_noise_threshold_radps",
-        rate_noise_threshold_radps, "[0, 1]");
-  check(err, in(rate_noise_k_sigma, 0.0, 100.0), "rate_noise_k_sigma", rate_noise_k_sigma,
-        "[0, 100]");
-  check(err, in_open_lo(zem_trigger_m, 0.0, 1e8), "zem_trigger_m", zem_trigger_m, "(0, 1e8]");
-  check(err, min_track_updates >= 1 && min_track_updates <= 1000, "min_track_updates",
-        min_track_updates, "[1, 1000]");
-  const LosFilterConfig& f = filter;
-  check(err, in_open_lo(f.process_noise_radps2, 0.0, 1e3), "filter.process_noise_radps2",
-        f.process_noise_radps2, "(0, 1e3]");
-  check(err, in_open_lo(f.init_rate_sigma_radps, 0.0, 10.0), "filter.init_rate_sigma_radps",
-        f.init_rate_sigma_radps, "(0, 10]");
-  check(err, in_open_lo(f.angle_sigma_floor_rad, 0.0, 1.0), "filter.angle_sigma_floor_rad",
-        f.angle_sigma_floor_rad, "(0, 1]");
-  check(err, in_open_lo(f.rate_sigma_floor_radps, 0.0, 1.0), "filter.rate_sigma_floor_radps",
-        f.rate_sigma_floor_radps, "(0, 1]");
-  check(err, in_open_lo(f.gate_chi2_2dof, 0.0, 1e6), "filter.gate_chi2_2dof", f.gate_chi2_2dof,
-        "(0, 1e6]");
-  check(err, in_open_lo(f.gate_chi2_4dof, 0.0, 1e6), "filter.gate_chi2_4dof", f.gate_chi2_4dof,
-        "(0, 1e6]");
-  check(err, in_open_lo(f.reinit_gap_s, 0.0, 3600.0), "filter.reinit_gap_s", f.reinit_gap_s,
-        "(0, 3600]");
-  check(err, f.max_consecutive_rejects >= 1 && f.max_consecutive_rejects <= 100000,
-        "filter.max_consecutive_rejects", f.max_consecutive_rejects, "[1, 100000]");
-  return err.str();
+  return validate_params(guidance_params(), *this, "guidance.");
 }
 
-GuidanceLaw::GuidanceLaw(const GuidanceConfig& cfg) : cfg_(cfg), filter_(cfg.filter) {
+GuidanceLaw::GuidanceLaw(const GuidanceConfig& cfg)
+    : cfg_(cfg), stale_us_(std::llround(cfg.stale_limit_s * 1e6)), filter_(cfg.filter) {
   const std::string err = cfg.validate();
   if (!err.empty()) throw std::invalid_argument(err);
 }
 
 void GuidanceLaw::reset() noexcept {
-  const GuidanceConfig cfg = cfg_;
-  filter_ = LosRateFilter(cfg.filter);
+  filter_ = LosRateFilter(cfg_.filter);
   status_ = GuidanceStatus{};
   have_prev_step_ = false;
   prev_step_us_ = 0;
   prev_accel_mps2_ = 0.0;
   have_time_origin_ = false;
   time_origin_us_ = 0;
-  coast_latched_ = false;
-  coast_reason_ = CommandReason::kPassedClosestApproach;
-  evade_started_ = false;
-  u_at_evade_start_eci_ = Vec3::Zero();
-  have_range_ = false;
-  range_utime_us_ = 0;
-  range_m_ = 0.0;
-  range_rate_mps_ = 0.0;
-  was_closing_ = false;
-  have_tca_estimate_ = false;
-  tca_estimate_us_ = 0;
+  enc_ = Encounter{};
+}
+
+// The one staleness test (guidance.stale_limit_s), for nav, measurements and range: older
+// than the limit, or further in the future than the limit.
+bool GuidanceLaw::is_stale(std::int64_t utime_us, std::int64_t now_us) const noexcept {
+  return now_us - utime_us > stale_us_ || utime_us - now_us > stale_us_;
 }
 
 ThrustCommand GuidanceLaw::hold(GuidanceMode mode, CommandReason reason,
@@ -151,14 +82,13 @@ ThrustCommand GuidanceLaw::hold(GuidanceMode mode, CommandReason reason,
   return cmd;
 }
 
-ThrustCommand GuidanceLaw::step(const GuidanceInput& in, std::int64_t now_us) noexcept {
-  // Account for the command in force since the previous step (zero-order hold).
-  if (have_prev_step_ && now_us > prev_step_us_) {
+// Stage 0: Δv and burn time of the command in force since the previous step (zero-order
+// hold), the cycle count and the filter's time origin.
+void GuidanceLaw::account_previous_command(std::int64_t now_us) noexcept {
+  if (have_prev_step_ && now_us > prev_step_us_ && prev_accel_mps2_ > 0.0) {
     const double dt = 1e-6 * static_cast<double>(now_us - prev_step_us_);
-    if (prev_accel_mps2_ > 0.0) {
-      status_.dv_used_mps += prev_accel_mps2_ * dt;
-      status_.burn_s += dt;
-    }
+    status_.dv_used_mps += prev_accel_mps2_ * dt;
+    status_.burn_s += dt;
   }
   have_prev_step_ = true;
   prev_step_us_ = now_us;
@@ -168,178 +98,199 @@ ThrustCommand GuidanceLaw::step(const GuidanceInput& in, std::int64_t now_us) no
     have_time_origin_ = true;
     time_origin_us_ = now_us;
   }
-  const std::int64_t stale_us = static_cast<std::int64_t>(cfg_.stale_limit_s * 1e6);
+}
 
-  // 1. Measurement: validate, then feed the filter.
-  if (in.has_measurement) {
-    const AnglesMeasurement& m = in.meas;
-    if (!m.valid) {
-      ++status_.meas_invalid;  // the sensor reports no detection
-    } else if (!measurement_well_formed(m) || m.utime_us > now_us + stale_us) {
-      ++status_.meas_invalid;
-      return hold(GuidanceMode::kSafe, CommandReason::kMeasurementInvalid, now_us);
-    } else if (now_us - m.utime_us > stale_us) {
-      ++status_.meas_invalid;  // arrived too late to be useful: ignored
-    } else {
-      LosMeasurement lm;
-      lm.t_s = to_s(m.utime_us);
-      lm.elevation_rad = m.elevation_rad;
-      lm.azimuth_rad = m.azimuth_rad;
-      lm.sigma_rad = m.sigma_rad;
-      lm.has_rates = m.has_rates;
-      lm.elevation_rate_radps = m.elevation_rate_radps;
-      lm.azimuth_rate_radps = m.azimuth_rate_radps;
-      lm.rate_sigma_radps = m.rate_sigma_radps;
-      const bool new_encounter =
-          !filter_.initialized() || lm.t_s - filter_.last_update_s() > cfg_.filter.reinit_gap_s;
-      if (new_encounter) {  // a new track: forget the previous encounter
-        coast_latched_ = false;
-        evade_started_ = false;
-        have_tca_estimate_ = false;
-        was_closing_ = false;
-      }
-      // Angles-only closest-approach test on the raw measurement (independent of the filter,
-      // which may be gating measurements while the LOS whips round at the encounter): the
-      // measured LOS has swung by more than 90° from its direction when EVADE began.
-      if (evade_started_ && !coast_latched_ &&
-          los_unit_from_angles(m.elevation_rad, m.azimuth_rad).dot(u_at_evade_start_eci_) < 0.0) {
-        coast_latched_ = true;
-        coast_reason_ = CommandReason::kPassedClosestApproach;
-      }
-      const LosUpdateResult r = filter_.update(lm);
-      if (m.has_range && r != LosUpdateResult::kRejected && r != LosUpdateResult::kOutOfOrder) {
-        have_range_ = true;
-        range_utime_us_ = m.utime_us;
-        range_m_ = m.range_m;
-        range_rate_mps_ = m.range_rate_mps;
-      }
-    }
+// Stage 1: accept the measurement. kMeasurementInvalid (SAFE) for a detection that is not
+// well formed or is from the future; a no-detection or a late one is counted and ignored.
+CommandReason GuidanceLaw::accept_measurement(const GuidanceInput& in,
+                                              std::int64_t now_us) noexcept {
+  if (!in.has_measurement) return CommandReason::kNone;
+  const AnglesMeasurement& m = in.meas;
+  if (!m.valid) {
+    ++status_.meas_invalid;  // the sensor reports no detection
+    return CommandReason::kNone;
   }
-  status_.meas_accepted = filter_.accepted();
-  status_.meas_rejected = filter_.rejected();
-  status_.filter_reinits = filter_.reinitializations();
+  if (!measurement_well_formed(m) || m.utime_us - now_us > stale_us_) {
+    ++status_.meas_invalid;
+    return CommandReason::kMeasurementInvalid;
+  }
+  if (is_stale(m.utime_us, now_us)) {
+    ++status_.meas_invalid;  // arrived too late to be useful: ignored
+    return CommandReason::kNone;
+  }
+  feed_filter(m);
+  return CommandReason::kNone;
+}
 
-  // 2. Navigation.
-  const NavState& nav = in.nav;
+// A well-formed, timely measurement: a new encounter resets the encounter state; the raw
+// LOS is tested for the angles-only closest approach (independent of the filter, which may
+// be gating measurements while the LOS whips round at the encounter); then the filter.
+void GuidanceLaw::feed_filter(const AnglesMeasurement& m) noexcept {
+  const double t_s = to_s(m.utime_us);
+  if (!filter_.initialized() || t_s - filter_.last_update_s() > cfg_.filter.reinit_gap_s) {
+    enc_ = Encounter{};  // a new track: forget the previous encounter
+  }
+  if (enc_.evade_started &&
+      los_unit_from_angles(m.elevation_rad, m.azimuth_rad).dot(enc_.u_at_evade_start_eci) < 0.0) {
+    enc_.raw_los_swung = true;
+  }
+  const LosUpdateResult r = filter_.update(m, t_s);
+  if (m.has_range && r != LosUpdateResult::kRejected && r != LosUpdateResult::kOutOfOrder) {
+    enc_.have_range = true;
+    enc_.range_utime_us = m.utime_us;
+    enc_.range_m = m.range_m;
+    enc_.range_rate_mps = m.range_rate_mps;
+  }
+}
+
+// Stage 2: navigation valid, finite, non-zero and fresh.
+CommandReason GuidanceLaw::check_navigation(const NavState& nav,
+                                            std::int64_t now_us) const noexcept {
   if (!nav.valid || !nav.r_eci_m.allFinite() || !nav.v_eci_mps.allFinite() ||
       !(nav.r_eci_m.norm() > 0.0)) {
-    return hold(GuidanceMode::kSafe, CommandReason::kNavInvalid, now_us);
+    return CommandReason::kNavInvalid;
   }
-  if (now_us - nav.utime_us > stale_us || nav.utime_us - now_us > stale_us) {
-    return hold(GuidanceMode::kSafe, CommandReason::kNavStale, now_us);
-  }
+  return is_stale(nav.utime_us, now_us) ? CommandReason::kNavStale : CommandReason::kNone;
+}
 
-  // 3. Track.
-  const bool tracked =
+// Stage 3: a track established (else STANDBY) and, unless coasting (or about to: the raw
+// LOS has swung past 90°), fed recently.
+CommandReason GuidanceLaw::check_track(std::int64_t now_us) noexcept {
+  status_.track_valid =
       filter_.initialized() && filter_.updates_since_init() >= cfg_.min_track_updates;
-  status_.track_valid = tracked;
-  if (!tracked) {
+  if (!status_.track_valid) {
     status_.zem_valid = false;
-    status_.tgo_valid = false;
-    return hold(GuidanceMode::kStandby, CommandReason::kNoTrack, now_us);
+    status_.t_go_valid = false;
+    return CommandReason::kNoTrack;
   }
-  const double now_s = to_s(now_us);
-  if (!coast_latched_ && now_s - filter_.last_update_s() > cfg_.stale_limit_s) {
-    return hold(GuidanceMode::kSafe, CommandReason::kMeasurementStale, now_us);
+  const bool coasting = enc_.coast_latched || enc_.raw_los_swung;
+  if (!coasting && to_s(now_us) - filter_.last_update_s() > cfg_.stale_limit_s) {
+    return CommandReason::kMeasurementStale;
   }
+  return CommandReason::kNone;
+}
 
-  // 4. Estimate at now: LOS frame with the zenith convention, ω_s and its variance.
+// Stage 4: the LOS frame at now with the zenith convention, ω_s, its variance and the e_θ
+// covariance, all from the filter's rate-block prediction and its own methods.
+bool GuidanceLaw::estimate_los(const NavState& nav, std::int64_t now_us,
+                               LosEstimate* est) noexcept {
   Vec3 u;
   Vec3 ud;
-  Mat6 P;
-  filter_.predict_to(now_s, &u, &ud, &P);
-  const double w = ud.norm();
-  const Mat3 Pr = P.bottomRightCorner<3, 3>();
-  const double w_var = (w > 0.0) ? (ud / w).dot(Pr * (ud / w)) : 0.5 * Pr.trace();
-  const double min_rate = std::max(cfg_.rate_noise_threshold_radps,
-                                   cfg_.rate_noise_k_sigma * std::sqrt(std::max(w_var, 0.0)));
-  LosFrame frame;
-  if (!los_frame(u, ud, nav.r_eci_m, nav.v_eci_mps, min_rate, &frame)) {
-    return hold(GuidanceMode::kSafe, CommandReason::kNavInvalid, now_us);
-  }
-  status_.los_rate_radps = w;
-  status_.los_rate_var_rad2ps2 = w_var;
-  status_.los_unit_eci = frame.e_r_eci;
-  status_.e_theta_eci = frame.e_theta_eci;
-  if (w > 0.0) {
-    const Vec3 e = ud / w;
-    const Mat3 J = (Mat3::Identity() - e * e.transpose()) / w;
-    status_.e_theta_cov = J * Pr * J.transpose();
-  } else {
-    status_.e_theta_cov = Mat3::Zero();
-  }
-  status_.zenith_flipped = frame.flipped;
-  status_.fallback_direction = frame.fallback;
+  Mat3 rate_cov;
+  filter_.predict_rate_to(to_s(now_us), &u, &ud, &rate_cov);
+  est->rate_radps = ud.norm();
+  est->rate_var_rad2ps2 = LosRateFilter::los_rate_variance(ud, rate_cov);
+  const double min_rate =
+      std::max(cfg_.rate_noise_threshold_radps,
+               cfg_.rate_noise_k_sigma * std::sqrt(std::max(est->rate_var_rad2ps2, 0.0)));
+  if (!los_frame(u, ud, nav.r_eci_m, nav.v_eci_mps, min_rate, &est->frame)) return false;
+  est->e_theta_cov_eci = LosRateFilter::e_theta_covariance(ud, rate_cov);
+  status_.los_rate_radps = est->rate_radps;
+  status_.los_rate_var_rad2ps2 = est->rate_var_rad2ps2;
+  status_.los_unit_eci = est->frame.e_r_eci;
+  status_.e_theta_eci = est->frame.e_theta_eci;
+  status_.e_theta_cov_eci = est->e_theta_cov_eci;
+  status_.zenith_flipped = est->frame.flipped;
+  status_.fallback_direction = est->frame.fallback;
+  return true;
+}
 
-  // 5. Range information (eq. 7, 12), from a recent enough measurement.
-  const bool range_fresh = have_range_ && now_us - range_utime_us_ <= stale_us;
+// Stage 5a: ZEM (eq. 7) and t_go (eq. 12) from a recent range measurement, and the time of
+// closest approach it predicts.
+void GuidanceLaw::update_range_estimates(double los_rate_radps, std::int64_t now_us) noexcept {
   status_.zem_valid = false;
-  status_.tgo_valid = false;
-  if (range_fresh) {
-    const double age_s = 1e-6 * static_cast<double>(now_us - range_utime_us_);
-    const double range_now = std::max(range_m_ + range_rate_mps_ * age_s, 0.0);
-    double zem = 0.0;
-    double tgo = 0.0;
-    if (zero_effort_miss_m(range_now, range_rate_mps_, w, &zem)) {
-      status_.zem_valid = true;
-      status_.zem_m = zem;
-    }
-    if (time_to_go_s(range_now, range_rate_mps_, &tgo)) {
-      status_.tgo_valid = true;
-      status_.tgo_s = tgo;
-      have_tca_estimate_ = true;
-      tca_estimate_us_ = now_us + static_cast<std::int64_t>(tgo * 1e6);
-    }
-    if (range_rate_mps_ < 0.0) was_closing_ = true;
-    if (range_rate_mps_ >= 0.0 && !coast_latched_) {
-      // Range rate changed sign (or the track began receding): closest approach passed.
-      coast_latched_ = true;
-      coast_reason_ = CommandReason::kPassedClosestApproach;
-    }
+  status_.t_go_valid = false;
+  if (!enc_.have_range || now_us - enc_.range_utime_us > stale_us_) return;
+  const double age_s = 1e-6 * static_cast<double>(now_us - enc_.range_utime_us);
+  const double range_now = std::max(enc_.range_m + enc_.range_rate_mps * age_s, 0.0);
+  double zem = 0.0;
+  double t_go = 0.0;
+  if (zero_effort_miss_m(range_now, enc_.range_rate_mps, los_rate_radps, &zem)) {
+    status_.zem_valid = true;
+    status_.zem_m = zem;
   }
-  if (!coast_latched_ && have_tca_estimate_ && !range_fresh && now_us > tca_estimate_us_) {
-    coast_latched_ = true;  // t_go has elapsed
-    coast_reason_ = CommandReason::kPassedClosestApproach;
+  if (time_to_go_s(range_now, enc_.range_rate_mps, &t_go)) {
+    status_.t_go_valid = true;
+    status_.t_go_s = t_go;
+    enc_.have_tca_estimate = true;
+    enc_.tca_estimate_us = now_us + static_cast<std::int64_t>(t_go * 1e6);
   }
-  if (!coast_latched_ && evade_started_ && frame.e_r_eci.dot(u_at_evade_start_eci_) < 0.0) {
-    coast_latched_ = true;  // the LOS swung by more than 90°: the encounter is behind us
-    coast_reason_ = CommandReason::kPassedClosestApproach;
-  }
+}
 
-  // 6. Limits.
-  const double dv_left = cfg_.dv_budget_mps - status_.dv_used_mps;
-  const double burn_left = cfg_.max_burn_s - status_.burn_s;
-  if (!coast_latched_ && dv_left <= 1e-9 * cfg_.dv_budget_mps) {
-    coast_latched_ = true;
-    coast_reason_ = CommandReason::kDvBudgetExhausted;
+// Stage 5b: the one place that decides the coast latch. The first trigger that applies:
+// the closest approach is behind us (range rate ≥ 0; t_go elapsed without fresh range; the
+// LOS, filtered or raw, swung by more than 90° since EVADE began), then the Δv budget,
+// then the burn time. kNone: no trigger.
+CommandReason GuidanceLaw::coast_trigger(const LosEstimate& est,
+                                         std::int64_t now_us) const noexcept {
+  const bool range_fresh = enc_.have_range && now_us - enc_.range_utime_us <= stale_us_;
+  const bool receding = range_fresh && enc_.range_rate_mps >= 0.0;
+  const bool t_go_elapsed = enc_.have_tca_estimate && !range_fresh && now_us > enc_.tca_estimate_us;
+  const bool los_swung =
+      enc_.evade_started &&
+      (enc_.raw_los_swung || est.frame.e_r_eci.dot(enc_.u_at_evade_start_eci) < 0.0);
+  if (receding || t_go_elapsed || los_swung) return CommandReason::kPassedClosestApproach;
+  if (cfg_.dv_budget_mps - status_.dv_used_mps <= 1e-9 * cfg_.dv_budget_mps) {
+    return CommandReason::kDvBudgetExhausted;
   }
-  if (!coast_latched_ && burn_left < cfg_.nominal_cycle_s * (1.0 - 1e-6)) {
-    coast_latched_ = true;
-    coast_reason_ = CommandReason::kBurnTimeExhausted;
+  if (cfg_.max_burn_s - status_.burn_s < cfg_.cycle_s() * (1.0 - 1e-6)) {
+    return CommandReason::kBurnTimeExhausted;
   }
-  if (coast_latched_) return hold(GuidanceMode::kCoast, coast_reason_, now_us);
+  return CommandReason::kNone;
+}
 
-  // 7. Arm and trigger.
-  if (!in.armed) return hold(GuidanceMode::kTracking, CommandReason::kDisarmed, now_us);
-  if (status_.zem_valid && status_.zem_m >= cfg_.zem_trigger_m) {
-    return hold(GuidanceMode::kTracking, CommandReason::kZemAboveTrigger, now_us);
+// Stage 7: EVADE, maximum acceleration along −e_θ (eq. 8–12), the last command reduced so
+// that one cycle cannot overshoot the Δv budget.
+ThrustCommand GuidanceLaw::evade(const LosEstimate& est, std::int64_t now_us) noexcept {
+  if (!enc_.evade_started) {
+    enc_.evade_started = true;
+    enc_.u_at_evade_start_eci = est.frame.e_r_eci;
   }
-
-  // 8. EVADE: maximum acceleration along −e_θ (eq. 8–12), within the Δv budget.
-  if (!evade_started_) {
-    evade_started_ = true;
-    u_at_evade_start_eci_ = frame.e_r_eci;
-  }
+  const double dv_left_mps = cfg_.dv_budget_mps - status_.dv_used_mps;
   ThrustCommand cmd;
   cmd.utime_us = now_us;
   cmd.mode = GuidanceMode::kEvade;
-  cmd.dir_eci = -frame.e_theta_eci;
-  cmd.accel_mps2 = std::min(cfg_.max_accel_mps2, dv_left / cfg_.nominal_cycle_s);
-  cmd.reason = frame.fallback ? CommandReason::kLowLosRate : CommandReason::kNone;
+  cmd.u_eci = -est.frame.e_theta_eci;
+  cmd.accel_mps2 = std::min(cfg_.max_accel_mps2, dv_left_mps / cfg_.cycle_s());
+  cmd.reason = est.frame.fallback ? CommandReason::kLowLosRate : CommandReason::kNone;
   status_.mode = cmd.mode;
   status_.reason = cmd.reason;
   prev_accel_mps2_ = cmd.accel_mps2;
   return cmd;
+}
+
+ThrustCommand GuidanceLaw::step(const GuidanceInput& in, std::int64_t now_us) noexcept {
+  account_previous_command(now_us);
+  const CommandReason meas = accept_measurement(in, now_us);
+  status_.meas_accepted = filter_.accepted();
+  status_.meas_rejected = filter_.rejected();
+  status_.filter_reinits = filter_.reinitializations();
+  if (meas != CommandReason::kNone) return hold(GuidanceMode::kSafe, meas, now_us);
+  if (in.watchdog != WatchdogVerdict::kAlive) {
+    ++status_.watchdog_cycles;
+    return hold(GuidanceMode::kSafe, CommandReason::kMeasurementStale, now_us);
+  }
+  const CommandReason nav = check_navigation(in.nav, now_us);
+  if (nav != CommandReason::kNone) return hold(GuidanceMode::kSafe, nav, now_us);
+  const CommandReason track = check_track(now_us);
+  if (track == CommandReason::kNoTrack) return hold(GuidanceMode::kStandby, track, now_us);
+  if (track != CommandReason::kNone) return hold(GuidanceMode::kSafe, track, now_us);
+  LosEstimate est;
+  if (!estimate_los(in.nav, now_us, &est)) {
+    return hold(GuidanceMode::kSafe, CommandReason::kNavInvalid, now_us);
+  }
+  update_range_estimates(est.rate_radps, now_us);
+  if (!enc_.coast_latched) {
+    const CommandReason trigger = coast_trigger(est, now_us);
+    enc_.coast_latched = trigger != CommandReason::kNone;
+    if (enc_.coast_latched) enc_.coast_reason = trigger;
+  }
+  if (enc_.coast_latched) return hold(GuidanceMode::kCoast, enc_.coast_reason, now_us);
+  if (!in.armed) return hold(GuidanceMode::kTracking, CommandReason::kDisarmed, now_us);
+  if (status_.zem_valid && status_.zem_m >= cfg_.zem_trigger_m) {
+    return hold(GuidanceMode::kTracking, CommandReason::kZemAboveTrigger, now_us);
+  }
+  return evade(est, now_us);
 }
 
 }  // namespace evade::guidance

@@ -8,11 +8,11 @@ void from_lcm(const evade_angles_t& m, guidance::AnglesMeasurement* out) noexcep
   out->seq = m.seq;
   out->elevation_rad = m.elevation_rad;
   out->azimuth_rad = m.azimuth_rad;
-  out->sigma_rad = m.sigma_angle_rad;
+  out->sigma_angle_rad = m.sigma_angle_rad;
   out->has_rates = m.has_rates;
   out->elevation_rate_radps = m.has_rates ? m.elevation_rate_radps : 0.0;
   out->azimuth_rate_radps = m.has_rates ? m.azimuth_rate_radps : 0.0;
-  out->rate_sigma_radps = m.has_rates ? m.sigma_rate_radps : 0.0;
+  out->sigma_rate_radps = m.has_rates ? m.sigma_rate_radps : 0.0;
   out->has_range = m.has_range;
   out->range_m = m.has_range ? m.range_m : 0.0;
   out->range_rate_mps = m.has_range ? m.range_rate_mps : 0.0;
@@ -31,7 +31,7 @@ void from_lcm(const evade_nav_state_t& m, guidance::NavState* out) noexcept {
 void from_lcm(const evade_thrust_cmd_t& m, guidance::ThrustCommand* out) noexcept {
   out->utime_us = m.utime;
   out->mode = static_cast<guidance::GuidanceMode>(m.mode);
-  for (int i = 0; i < 3; ++i) out->dir_eci[i] = m.u_eci[i];
+  for (int i = 0; i < 3; ++i) out->u_eci[i] = m.u_eci[i];
   out->accel_mps2 = m.accel_mps2;
   out->reason = static_cast<guidance::CommandReason>(m.reason);
 }
@@ -45,12 +45,12 @@ void from_lcm(const evade_guidance_status_t& m, guidance::GuidanceStatus* out) n
   out->los_rate_var_rad2ps2 = m.los_rate_var_rad2ps2;
   for (int i = 0; i < 3; ++i) {
     out->e_theta_eci[i] = m.e_theta_eci[i];
-    for (int j = 0; j < 3; ++j) out->e_theta_cov(i, j) = m.e_theta_cov_eci[3 * i + j];
+    for (int j = 0; j < 3; ++j) out->e_theta_cov_eci(i, j) = m.e_theta_cov_eci[3 * i + j];
   }
   out->zem_valid = m.has_range;
-  out->tgo_valid = m.has_range;
+  out->t_go_valid = m.has_range;
   out->zem_m = m.zem_m;
-  out->tgo_s = m.t_go_s;
+  out->t_go_s = m.t_go_s;
   out->dv_used_mps = m.dv_used_mps;
   out->cycles = static_cast<long>(m.cycles);
 }
@@ -61,11 +61,11 @@ void to_lcm(const guidance::AnglesMeasurement& a, std::int64_t seq, evade_angles
   out->valid = a.valid;
   out->elevation_rad = a.elevation_rad;
   out->azimuth_rad = a.azimuth_rad;
-  out->sigma_angle_rad = a.sigma_rad;
+  out->sigma_angle_rad = a.sigma_angle_rad;
   out->has_rates = a.has_rates;
   out->elevation_rate_radps = a.elevation_rate_radps;
   out->azimuth_rate_radps = a.azimuth_rate_radps;
-  out->sigma_rate_radps = a.rate_sigma_radps;
+  out->sigma_rate_radps = a.sigma_rate_radps;
   out->has_range = a.has_range;
   out->range_m = a.range_m;
   out->range_rate_mps = a.range_rate_mps;
@@ -88,7 +88,7 @@ void to_lcm(const guidance::ThrustCommand& c, std::int64_t seq, std::int64_t inp
   out->utime = c.utime_us;
   out->seq = seq;
   out->mode = static_cast<std::int8_t>(c.mode);
-  for (int i = 0; i < 3; ++i) out->u_eci[i] = c.dir_eci[i];
+  for (int i = 0; i < 3; ++i) out->u_eci[i] = c.u_eci[i];
   out->accel_mps2 = c.accel_mps2;
   out->reason = static_cast<std::int16_t>(c.reason);
   out->input_utime = input_utime;
@@ -102,11 +102,11 @@ void to_lcm(const guidance::GuidanceStatus& s, evade_guidance_status_t* out) noe
   out->los_rate_var_rad2ps2 = s.los_rate_var_rad2ps2;
   for (int i = 0; i < 3; ++i) {
     out->e_theta_eci[i] = s.e_theta_eci[i];
-    for (int j = 0; j < 3; ++j) out->e_theta_cov_eci[3 * i + j] = s.e_theta_cov(i, j);
+    for (int j = 0; j < 3; ++j) out->e_theta_cov_eci[3 * i + j] = s.e_theta_cov_eci(i, j);
   }
-  out->has_range = s.zem_valid && s.tgo_valid;
+  out->has_range = s.zem_valid && s.t_go_valid;
   out->zem_m = s.zem_valid ? s.zem_m : 0.0;
-  out->t_go_s = s.tgo_valid ? s.tgo_s : 0.0;
+  out->t_go_s = s.t_go_valid ? s.t_go_s : 0.0;
   out->dv_used_mps = s.dv_used_mps;
 }
 

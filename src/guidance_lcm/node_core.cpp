@@ -5,22 +5,15 @@
 #include <time.h>
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/convert.hpp"
+#include "evade/guidance_lcm/node_params.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
 namespace evade::guidance_lcm {
 namespace {
-
-template <typename T>
-std::string range_error(const char* field, T value, const char* range) {
-  std::ostringstream os;
-  os << "NodeConfig." << field << " = " << value << " outside " << range;
-  return os.str();
-}
 
 std::int64_t monotonic_us() noexcept {
   timespec ts{};
@@ -31,17 +24,8 @@ std::int64_t monotonic_us() noexcept {
 }  // namespace
 
 std::string NodeConfig::validate() const {
-  if (!(stale_limit_s > 0.0 && stale_limit_s <= 60.0))
-    return range_error("stale_limit_s", stale_limit_s, "(0, 60] s");
-  if (!(future_tolerance_s >= 0.0 && future_tolerance_s <= 10.0))
-    return range_error("future_tolerance_s", future_tolerance_s, "[0, 10] s");
-  if (queue_capacity < 1 || queue_capacity > 4096)
-    return range_error("queue_capacity", queue_capacity, "[1, 4096]");
-  if (max_drain_per_cycle < 1 || max_drain_per_cycle > 1000000)
-    return range_error("max_drain_per_cycle", max_drain_per_cycle, "[1, 1000000]");
-  if (status_divider < 1 || status_divider > 10000)
-    return range_error("status_divider", status_divider, "[1, 10000]");
-  return guidance.validate();
+  const std::string err = validate_params(node_params(), *this, "node.");
+  return err.empty() ? guidance.validate() : err;
 }
 
 static const NodeConfig& checked(const NodeConfig& cfg) {
@@ -54,10 +38,10 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
     : lcm_(lcm),
       cfg_(checked(cfg)),
       law_(cfg.guidance),
-      stale_us_(static_cast<std::int64_t>(std::llround(cfg.stale_limit_s * 1e6))),
+      stale_us_(static_cast<std::int64_t>(std::llround(cfg.guidance.stale_limit_s * 1e6))),
       future_us_(static_cast<std::int64_t>(std::llround(cfg.future_tolerance_s * 1e6))),
       queue_(static_cast<std::size_t>(cfg.queue_capacity)),
-      armed_(cfg.armed),
+      armed_(cfg.guidance.armed),
       cmd_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmd),
       status_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanStatus) {
   if (lcm_ == nullptr) throw std::invalid_argument("GuidanceNode: lcm is null");
@@ -230,25 +214,19 @@ void GuidanceNode::process_queue(std::int64_t now_us) noexcept {
 
 const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept {
   process_queue(now_us);
+  // Watchdog (NODE-WD-1): the newest valid measurement received is older than the stale
+  // limit. Its verdict is an input of the law, which then commands SAFE and counts it.
+  const bool silent = have_angles_ && now_us - last_angles_utime_ > stale_us_;
+  input_.watchdog = silent ? guidance::WatchdogVerdict::kInputSilent
+                           : guidance::WatchdogVerdict::kAlive;
   guidance::ThrustCommand cmd = law_.step(input_, now_us);
   cmd.utime_us = now_us;
-  // Node watchdog (NODE-WD-1): independent of the law's own stale logic, zero thrust as
-  // soon as the newest valid measurement is older than the stale limit.
-  if (have_angles_ && now_us - last_angles_utime_ > stale_us_) {
-    cmd.mode = guidance::GuidanceMode::kSafe;
-    cmd.dir_eci.setZero();
-    cmd.accel_mps2 = 0.0;
-    cmd.reason = guidance::CommandReason::kMeasurementStale;
-    ++watchdog_cycles_;
-  }
   to_lcm(cmd, ++cmd_seq_, have_angles_ ? last_angles_utime_ : -1, &cmd_msg_);
   cmd_pub_.publish(cmd_msg_);
   ++cycles_;
 
   if (cycles_ % cfg_.status_divider == 0) {
     to_lcm(law_.status(), &status_msg_);
-    status_msg_.mode = cmd_msg_.mode;  // after the watchdog
-    status_msg_.reason = cmd_msg_.reason;
     status_msg_.utime = now_us;
     status_msg_.seq = ++status_seq_;
     status_msg_.armed = armed_;
@@ -260,7 +238,7 @@ const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept 
     status_msg_.n_dropped = counts_.dropped;
     status_msg_.n_seq_gaps = counts_.seq_gaps;
     status_msg_.cycles = cycles_;
-    status_msg_.watchdog_cycles = watchdog_cycles_;
+    status_msg_.watchdog_cycles = law_.status().watchdog_cycles;
     status_msg_.overruns = compute_.overruns();
     status_msg_.cycle_p50_us = compute_.quantile(0.50);
     status_msg_.cycle_p99_us = compute_.quantile(0.99);

@@ -1,46 +1,39 @@
-// Edge validation of LCM messages (design_node.md NODE-IN-2). Angles follow paper 000
-// eq. 13-14: elevation in [-pi/2, pi/2], azimuth in [-2pi, 2pi] (the law wraps it). A message
+// Edge validation of LCM messages (GUIDANCE_NODE.md NODE-IN-2). Angles follow paper 000
+// eq. 13-14 through guidance::measurement_well_formed (the law's own definition). A message
 // flagged valid = 0 is well formed ("no detection", "nav invalid"): it passes and the law
 // decides what it means.
 #include "evade/guidance_lcm/validate.hpp"
 
 #include <cmath>
 
+#include "evade/guidance/angles_measurement.hpp"
+#include "evade/guidance_lcm/convert.hpp"
+
 namespace evade::guidance_lcm {
 namespace {
 
 bool finite(double x) noexcept { return std::isfinite(x); }
 bool finite3(const double* v) noexcept { return finite(v[0]) && finite(v[1]) && finite(v[2]); }
-bool within(double x, double lo, double hi) noexcept { return x >= lo && x <= hi; }
 bool norm_le(const double* v, double max) noexcept {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) <= max;
 }
 
 }  // namespace
 
+// Every numeric field finite (also those the flags mark unused: a sender that writes NaN
+// anywhere is broken), then the law's own definition of a well-formed measurement.
 Reason validate(const evade_angles_t& m) noexcept {
-  if (!finite(m.elevation_rad) || !finite(m.azimuth_rad) || !finite(m.sigma_angle_rad))
-    return Reason::kNotFinite;
-  if (m.has_rates && (!finite(m.elevation_rate_radps) || !finite(m.azimuth_rate_radps) ||
-                      !finite(m.sigma_rate_radps)))
-    return Reason::kNotFinite;
-  if (m.has_range && (!finite(m.range_m) || !finite(m.range_rate_mps) ||
-                      !finite(m.sigma_range_m) || !finite(m.sigma_range_rate_mps)))
-    return Reason::kNotFinite;
-  if (!within(m.elevation_rad, -Limits::kMaxElevationRad, Limits::kMaxElevationRad) ||
-      !within(m.azimuth_rad, Limits::kMinAzimuthRad, Limits::kMaxAzimuthRad) ||
-      !(m.sigma_angle_rad >= 0.0 && m.sigma_angle_rad <= Limits::kMaxSigmaAngleRad))
-    return Reason::kOutOfRange;
-  if (m.has_rates &&
-      (!within(m.elevation_rate_radps, -Limits::kMaxAngleRateRadps, Limits::kMaxAngleRateRadps) ||
-       !within(m.azimuth_rate_radps * std::cos(m.elevation_rad), -Limits::kMaxAngleRateRadps,
-               Limits::kMaxAngleRateRadps) ||
-       !(m.sigma_rate_radps >= 0.0 && m.sigma_rate_radps <= Limits::kMaxAngleRateRadps)))
-    return Reason::kOutOfRange;
-  if (m.has_range &&
-      (!(m.range_m > 0.0 && m.range_m <= Limits::kMaxRangeM) ||
-       !within(m.range_rate_mps, -Limits::kMaxRangeRateMps, Limits::kMaxRangeRateMps) ||
-       !(m.sigma_range_m >= 0.0) || !(m.sigma_range_rate_mps >= 0.0)))
+  const double fields[] = {m.elevation_rad,        m.azimuth_rad,       m.sigma_angle_rad,
+                           m.elevation_rate_radps, m.azimuth_rate_radps, m.sigma_rate_radps,
+                           m.range_m,              m.range_rate_mps,    m.sigma_range_m,
+                           m.sigma_range_rate_mps};
+  for (double x : fields) {
+    if (!finite(x)) return Reason::kNotFinite;
+  }
+  guidance::AnglesMeasurement a;
+  from_lcm(m, &a);
+  if (!guidance::measurement_well_formed(a)) return Reason::kOutOfRange;
+  if (m.has_range && !(m.sigma_range_m >= 0.0 && m.sigma_range_rate_mps >= 0.0))
     return Reason::kOutOfRange;
   return Reason::kOk;
 }

@@ -13,13 +13,13 @@ Actuator::Actuator(const ActuatorConfig& cfg) : cfg_(cfg), rng_(cfg.seed) {}
 Vec3 Actuator::accel_eci_mps2(const guidance::ThrustCommand& cmd) {
   const double err = cfg_.direction_error_rad * normal_(rng_);
   const double phase = kTwoPi * uniform_(rng_);
-  const double n = cmd.dir_eci.norm();
+  const double n = cmd.u_eci.norm();
   if (!(cmd.accel_mps2 > 0.0) || !std::isfinite(cmd.accel_mps2) || !(n > 0.0) ||
-      !cmd.dir_eci.allFinite()) {
+      !cmd.u_eci.allFinite()) {
     return Vec3::Zero();
   }
   const double a = std::min(cmd.accel_mps2, cfg_.max_accel_mps2);
-  Vec3 d = cmd.dir_eci / n;
+  Vec3 d = cmd.u_eci / n;
   if (err != 0.0) {
     // Random axis perpendicular to d, then rotate d about it by err.
     const Vec3 ref = (std::abs(d.x()) < 0.9) ? Vec3::UnitX() : Vec3::UnitY();

@@ -53,7 +53,7 @@ MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t 
         SimConfig c = base;
         c.sensor.seed = splitmix64(seed, 2 * static_cast<std::uint64_t>(i));
         c.actuator.seed = splitmix64(seed, 2 * static_cast<std::uint64_t>(i) + 1);
-        auto ep = make_in_process_endpoint(c.guidance, c.armed);
+        auto ep = make_in_process_endpoint(c.guidance, c.guidance.armed);
         const SimResult s = run_simulation(c, *ep);
         if (!s.closest_approach_found) throw std::runtime_error("no closest approach found");
         std::lock_guard<std::mutex> lock(mu);

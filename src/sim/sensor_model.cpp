@@ -48,15 +48,15 @@ bool AngleSensor::measure(std::int64_t utime_us, const StateEci& satellite,
   if (m.elevation_rad > 0.5 * kPi) m.elevation_rad = kPi - m.elevation_rad;
   if (m.elevation_rad < -0.5 * kPi) m.elevation_rad = -kPi - m.elevation_rad;
   m.azimuth_rad = std::remainder(m.azimuth_rad, kTwoPi);
-  m.sigma_rad = cfg_.noise_rad;
-  m.has_rates = cfg_.provide_rates;
-  if (cfg_.provide_rates) {
+  m.sigma_angle_rad = cfg_.noise_rad;
+  m.has_rates = cfg_.has_rates;
+  if (cfg_.has_rates) {
     m.elevation_rate_radps = el_rate + cfg_.rate_noise_radps * n_elr;
     m.azimuth_rate_radps = (az_rate_cos + cfg_.rate_noise_radps * n_azr) / ce_safe;
-    m.rate_sigma_radps = cfg_.rate_noise_radps;
+    m.sigma_rate_radps = cfg_.rate_noise_radps;
   }
-  m.has_range = cfg_.provide_range;
-  if (cfg_.provide_range) {
+  m.has_range = cfg_.has_range;
+  if (cfg_.has_range) {
     m.range_m = rel_r.norm() + cfg_.range_noise_m * n_r;
     m.range_rate_mps = u.dot(rel_v) + cfg_.range_rate_noise_mps * n_rr;
   }

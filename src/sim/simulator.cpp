@@ -5,6 +5,8 @@
 // as the rising zero of g = (r_d − r_s)·(v_d − v_s) on the dense output (Brent).
 #include "evade/sim/simulator.hpp"
 
+#include "evade/sim/sim_params.hpp"
+
 #include <cmath>
 #include <deque>
 #include <stdexcept>
@@ -34,10 +36,6 @@ double closing_g(const Vec12& x) {
   return (x.segment<3>(6) - x.segment<3>(0)).dot(x.segment<3>(9) - x.segment<3>(3));
 }
 
-void fail(const std::string& key, double v, const std::string& range) {
-  throw std::invalid_argument("sim." + key + " = " + std::to_string(v) + " outside " + range);
-}
-
 bool finite_state(const StateEci& s) { return s.r_eci_m.allFinite() && s.v_eci_mps.allFinite(); }
 
 struct Pending {
@@ -55,30 +53,10 @@ void SimConfig::validate() const {
   if (!finite_state(debris0) || !(debris0.r_eci_m.norm() > 0.0)) {
     throw std::invalid_argument("sim.debris: state not finite or zero position");
   }
-  auto chk = [](const char* key, double v, double lo, double hi, bool lo_open) {
-    const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && v <= hi;
-    if (!ok) fail(key, v, std::string(lo_open ? "(" : "[") + std::to_string(lo) + ", " +
-                              std::to_string(hi) + "]");
-  };
-  chk("encounter_search_s", encounter_search_s, 0.0, 1e6, true);
-  chk("detect_before_tca_s", detect_before_tca_s, 0.0, 1e5, true);
-  chk("guidance_rate_hz", guidance_rate_hz, 0.0, 1000.0, true);
-  chk("post_tca_s", post_tca_s, 0.0, 1e4, false);
-  chk("max_duration_s", max_duration_s, 0.0, 1e6, true);
-  chk("sensor.rate_hz", sensor.rate_hz, 0.0, 1000.0, true);
-  chk("sensor.noise_rad", sensor.noise_rad, 0.0, 1.0, false);
-  chk("sensor.bias_rad", sensor.bias_rad, -1.0, 1.0, false);
-  chk("sensor.latency_s", sensor.latency_s, 0.0, 10.0, false);
-  chk("sensor.dropout_prob", sensor.dropout_prob, 0.0, 0.999, false);
-  chk("sensor.rate_noise_radps", sensor.rate_noise_radps, 0.0, 1.0, false);
-  chk("sensor.range_noise_m", sensor.range_noise_m, 0.0, 1e6, false);
-  chk("sensor.range_rate_noise_mps", sensor.range_rate_noise_mps, 0.0, 1e4, false);
-  chk("actuator.max_accel_mps2", actuator.max_accel_mps2, 0.0, 1000.0, true);
-  chk("actuator.direction_error_rad", actuator.direction_error_rad, 0.0, 3.14159, false);
-  chk("actuator.latency_s", actuator.latency_s, 0.0, 10.0, false);
+  std::string err = validate_params(sim_params(), *this, "");
+  if (err.empty()) err = guidance.validate();
+  if (!err.empty()) throw std::invalid_argument(err);
   integrator.validate();
-  const std::string g = guidance.validate();
-  if (!g.empty()) throw std::invalid_argument(g);
 }
 
 Encounter find_nominal_encounter(const SimConfig& cfg) {
@@ -96,7 +74,7 @@ Encounter find_nominal_encounter(const SimConfig& cfg) {
   eo.time_tol_s = 1e-10;
   auto g = [](double, const Vec12& x) { return closing_g(x); };
   const auto events = propagate_until_events(f, 0.0, pack(cfg.satellite0, cfg.debris0),
-                                             cfg.encounter_search_s, g, cfg.integrator, eo);
+                                             cfg.encounter.search_s, g, cfg.integrator, eo);
   Encounter e;
   if (events.empty()) return e;
   e.found = true;
@@ -113,12 +91,12 @@ SimResult run_simulation(const SimConfig& cfg, GuidanceEndpoint& guidance,
   const Encounter enc = find_nominal_encounter(cfg);
   if (!enc.found) {
     throw std::runtime_error("sim: no closest approach within encounter_search_s = " +
-                             std::to_string(cfg.encounter_search_s) + " s of the epoch");
+                             std::to_string(cfg.encounter.search_s) + " s of the epoch");
   }
   SimResult res;
   res.nominal_tca_s = enc.tca_s;
   res.nominal_miss_m = enc.miss_m;
-  const double t_start = enc.tca_s - cfg.detect_before_tca_s;
+  const double t_start = enc.tca_s - cfg.encounter.detect_before_tca_s;
   res.start_s = t_start;
 
   Vec3 a_thrust = Vec3::Zero();  // applied acceleration of the satellite (ZOH)
@@ -144,7 +122,7 @@ SimResult run_simulation(const SimConfig& cfg, GuidanceEndpoint& guidance,
   AngleSensor sensor(cfg.sensor);
   Actuator actuator(cfg.actuator);
   constexpr std::int64_t kUtime0 = 1'000'000'000;  // utime of the start (arbitrary, > 0)
-  const std::int64_t cycle_us = std::llround(1e6 / cfg.guidance_rate_hz);
+  const std::int64_t cycle_us = std::llround(1e6 / cfg.guidance.rate_hz);
   const std::int64_t sensor_us = std::llround(1e6 / cfg.sensor.rate_hz);
   const std::int64_t sensor_lat_us = std::llround(cfg.sensor.latency_s * 1e6);
   const std::int64_t act_lat_us = std::llround(cfg.actuator.latency_s * 1e6);
@@ -152,7 +130,7 @@ SimResult run_simulation(const SimConfig& cfg, GuidanceEndpoint& guidance,
   auto t_of = [&](std::int64_t utime) {
     return t_start + 1e-6 * static_cast<double>(utime - kUtime0);
   };
-  const std::int64_t max_us = std::llround(cfg.max_duration_s * 1e6);
+  const std::int64_t max_us = std::llround(cfg.encounter.max_duration_s * 1e6);
 
   std::deque<Pending> meas_queue;   // waiting for delivery (sensor latency)
   std::deque<Pending> accel_queue;  // waiting to take effect (actuator latency)
@@ -259,7 +237,7 @@ SimResult run_simulation(const SimConfig& cfg, GuidanceEndpoint& guidance,
             res.closest_approach_found = true;
             res.tca_s = ev->t_s;
             res.miss_m = (ev->x.segment<3>(6) - ev->x.segment<3>(0)).norm();
-            t_stop = ev->t_s + cfg.post_tca_s;
+            t_stop = ev->t_s + cfg.encounter.post_tca_s;
             // Δv and burn time of this segment up to the closest approach.
             const double an = a_thrust.norm();
             if (an > 0.0) {

@@ -79,9 +79,9 @@ TEST(GuidanceLaw, EvadesAtMaxAccelAlongMinusEthetaWithZenithConvention) {
   los_from_relative(g.rel_r(t), g.v, &u, &ud);
   Vec3 e_theta = ud.normalized();
   if (u.cross(e_theta).x() < 0.0) e_theta = -e_theta;
-  EXPECT_LT((c.dir_eci + e_theta).norm(), 1e-6);
-  EXPECT_NEAR(c.dir_eci.norm(), 1.0, 1e-12);
-  EXPECT_NEAR(c.dir_eci.dot(u), 0.0, 1e-9);  // perpendicular to the LOS
+  EXPECT_LT((c.u_eci + e_theta).norm(), 1e-6);
+  EXPECT_NEAR(c.u_eci.norm(), 1.0, 1e-12);
+  EXPECT_NEAR(c.u_eci.dot(u), 0.0, 1e-9);  // perpendicular to the LOS
 }
 
 TEST(GuidanceLaw, DisarmedTracksButNeverThrusts) {
@@ -90,7 +90,7 @@ TEST(GuidanceLaw, DisarmedTracksButNeverThrusts) {
   for (int k = 0; k < 50; ++k) {
     const ThrustCommand c = law.step(input(g, kT0 + k * kCycle, false), kT0 + k * kCycle);
     EXPECT_EQ(c.accel_mps2, 0.0);
-    EXPECT_EQ(c.dir_eci, Vec3::Zero());
+    EXPECT_EQ(c.u_eci, Vec3::Zero());
     if (k > 2) {
       EXPECT_EQ(c.mode, GuidanceMode::kTracking);
       EXPECT_EQ(c.reason, CommandReason::kDisarmed);
@@ -150,7 +150,7 @@ TEST(GuidanceLaw, SafeOnMalformedMeasurement) {
     if (which == 0) in.meas.elevation_rad = NAN;
     if (which == 1) in.meas.azimuth_rad = INFINITY;
     if (which == 2) in.meas.elevation_rad = 2.0;  // > π/2
-    if (which == 3) in.meas.sigma_rad = -1.0;
+    if (which == 3) in.meas.sigma_angle_rad = -1.0;
     const ThrustCommand c = law.step(in, kT0 + 3 * kCycle);
     EXPECT_EQ(c.mode, GuidanceMode::kSafe) << which;
     EXPECT_EQ(c.reason, CommandReason::kMeasurementInvalid) << which;
@@ -220,8 +220,8 @@ TEST(GuidanceLaw, RangeSensorGivesZemTgoAndCoastsWhenRangeRateTurnsPositive) {
       const double w = r.cross(g.v).norm() / r.squaredNorm();
       ASSERT_TRUE(law.status().zem_valid);
       EXPECT_NEAR(law.status().zem_m, r.squaredNorm() * w / -rdot, 1e-3);  // eq. 7
-      ASSERT_TRUE(law.status().tgo_valid);
-      EXPECT_NEAR(law.status().tgo_s, r.norm() / -rdot, 1e-9);  // eq. 12
+      ASSERT_TRUE(law.status().t_go_valid);
+      EXPECT_NEAR(law.status().t_go_s, r.norm() / -rdot, 1e-9);  // eq. 12
     }
     if (k >= 1 && t < 9.99) {  // k = 0: one update < min_track_updates = 2: STANDBY
       EXPECT_EQ(c.mode, GuidanceMode::kTracking) << "t = " << t;

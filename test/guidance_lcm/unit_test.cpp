@@ -28,8 +28,8 @@ evade_angles_t good_angles() {
 TEST(Validate, AcceptsGoodAnglesAndTheRangeEnds) {
   evade_angles_t a = good_angles();
   EXPECT_EQ(validate(a), Reason::kOk);
-  a.elevation_rad = Limits::kMaxElevationRad;
-  a.azimuth_rad = -Limits::kMaxAzimuthRad;
+  a.elevation_rad = guidance::MeasurementLimits::kMaxElevationRad;
+  a.azimuth_rad = -guidance::MeasurementLimits::kMaxAbsAzimuthRad;
   EXPECT_EQ(validate(a), Reason::kOk);
   a.valid = false;  // "no detection" is well formed: the law decides
   EXPECT_EQ(validate(a), Reason::kOk);
@@ -61,11 +61,18 @@ TEST(Validate, RejectsEachBadAngleField) {
     c.mutate(a, nan);
     EXPECT_EQ(validate(a), c.want);
   }
-  // Rates and range fields are ignored when their flag is clear.
+  // NaN in a field its flag marks unused still rejects the whole message: a sender that
+  // writes NaN anywhere is broken, and its angles must not drive thrust (GUIDANCE_NODE.md
+  // NODE-IN-2: every numeric field is checked).
   evade_angles_t a = good_angles();
   a.elevation_rate_radps = nan;
+  EXPECT_EQ(validate(a), Reason::kNotFinite);
+  a = good_angles();
   a.range_m = nan;
-  EXPECT_EQ(validate(a), Reason::kOk);
+  EXPECT_EQ(validate(a), Reason::kNotFinite);
+  a = good_angles();
+  a.sigma_range_rate_mps = INFINITY;
+  EXPECT_EQ(validate(a), Reason::kNotFinite);
 }
 
 TEST(Validate, CommandUnitVectorMustBeUnitWhenThrusting) {
@@ -95,11 +102,11 @@ TEST(Convert, AnglesAndNavRoundTripBitExact) {
   m.seq = 5;
   m.elevation_rad = 0.1 + 1e-17;
   m.azimuth_rad = std::nextafter(1.0, 2.0);
-  m.sigma_rad = 3e-6;
+  m.sigma_angle_rad = 3e-6;
   m.has_rates = true;
   m.elevation_rate_radps = 1.234567890123e-9;
   m.azimuth_rate_radps = -4e-9;
-  m.rate_sigma_radps = 1e-10;
+  m.sigma_rate_radps = 1e-10;
   m.has_range = true;
   m.range_m = 10000.000000001;
   m.range_rate_mps = -6712.4;

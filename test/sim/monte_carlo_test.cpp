@@ -19,12 +19,12 @@ using namespace evade;
 TEST(SimMonteCarlo, NoisyAnglesOnlyP5MissAtLeast80PercentOfIdeal) {
   sim::SimConfig c = sim::sim_config_from_scenario(config::Scenario::load("seed0"));
   c.guidance.max_accel_mps2 = 1.0;
-  c.detect_before_tca_s = 10.0;
+  c.encounter.detect_before_tca_s = 10.0;
   auto ideal_ep = sim::make_in_process_endpoint(c.guidance, true);
   const double ideal = sim::run_simulation(c, *ideal_ep).miss_m;
   c.sensor.noise_rad = 50e-6;
   c.sensor.rate_hz = 50.0;
-  c.sensor.provide_rates = false;
+  c.sensor.has_rates = false;
   const sim::MonteCarloResult mc = sim::run_monte_carlo(c, 200, 20261121, 2);
   std::printf("ideal %.4f m; 200 runs: min %.4f p5 %.4f p50 %.4f p95 %.4f max %.4f mean %.4f m\n",
               ideal, mc.miss_min_m, mc.miss_p5_m, mc.miss_p50_m, mc.miss_p95_m, mc.miss_max_m,

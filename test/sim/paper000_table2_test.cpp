@@ -39,14 +39,13 @@ constexpr Entry kTable2[] = {
 void run_table(double rate_hz, double tol_m) {
   const auto sc = evade::config::Scenario::load("seed0");
   evade::sim::SimConfig base = evade::sim::sim_config_from_scenario(sc);
-  base.guidance_rate_hz = rate_hz;
+  base.guidance.rate_hz = rate_hz;
   base.sensor.rate_hz = rate_hz;
-  base.guidance.nominal_cycle_s = 1.0 / rate_hz;
   std::printf("guidance at %.0f Hz\n", rate_hz);
   std::printf("detect_s accel_mps2   paper_m       ours_m      diff_mm  dv_mps\n");
   for (const Entry& e : kTable2) {
     evade::sim::SimConfig c = base;
-    c.detect_before_tca_s = e.detect_s;
+    c.encounter.detect_before_tca_s = e.detect_s;
     c.guidance.max_accel_mps2 = e.accel_mps2;
     auto ep = evade::sim::make_in_process_endpoint(c.guidance, true);
     const evade::sim::SimResult r = evade::sim::run_simulation(c, *ep);

@@ -35,7 +35,7 @@ class PlusEthetaNoFlip final : public sim::GuidanceEndpoint {
         m->elevation_rad, m->azimuth_rad, m->elevation_rate_radps, m->azimuth_rate_radps);
     if (!(ud.norm() > 0.0)) return c;
     c.mode = guidance::GuidanceMode::kEvade;
-    c.dir_eci = ud.normalized();
+    c.u_eci = ud.normalized();
     c.accel_mps2 = accel_;
     return c;
   }
@@ -83,7 +83,7 @@ TEST(SimSign, PlusEthetaWithoutFlipHomesWhileMinusEthetaEvades) {
 
 TEST(SimModes, CoastsWithZeroThrustAfterTheClosestApproach) {
   sim::SimConfig c = seed0();
-  c.post_tca_s = 1.0;
+  c.encounter.post_tca_s = 1.0;
   auto ep = sim::make_in_process_endpoint(c.guidance, true);
   std::vector<sim::SimSample> samples;
   const sim::SimResult r =

@@ -17,7 +17,11 @@ template <class Cfg>
 void read_params(const Scenario& sc, const std::string& prefix, const ParamTable<Cfg>& table,
                  Cfg* cfg) {
   for (const Param<Cfg>& p : table) {
-    p.set(*cfg, sc.get_param(prefix + p.spec.key, p.spec, p.get(*cfg)));
+    if (p.spec.type == ParamType::kSeed) {
+      *p.seed(*cfg) = sc.get_seed(prefix + p.spec.key, *p.seed(*cfg));
+    } else {
+      p.set(*cfg, sc.get_param(prefix + p.spec.key, p.spec, p.get(*cfg)));
+    }
   }
 }
 

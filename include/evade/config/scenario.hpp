@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -70,6 +71,8 @@ class Scenario {
   /// A declared parameter (evade/core/param.hpp) at key: parsed by its type, checked against
   /// its range, and reported with param_error()'s text; `fallback` when the key is absent.
   double get_param(const std::string& key, const ParamSpec& spec, double fallback) const;
+  /// A random seed: decimal digits, any value of std::uint64_t, read exactly.
+  std::uint64_t get_seed(const std::string& key, std::uint64_t fallback) const;
 
   /// Marks a key as known without reading it (e.g. a comment field).
   void mark_used(const std::string& key) const;

@@ -19,8 +19,8 @@
 
 namespace evade {
 
-/// kSeed: an unsigned 64-bit integer (random seeds), whole numbers up to 2^53 so that the
-/// double carried by get()/set() is exact.
+/// kSeed: an unsigned 64-bit integer (random seeds; any value is valid). Readers move it as
+/// std::uint64_t (Scenario::get_seed), never through a double.
 enum class ParamType : std::uint8_t { kReal = 0, kInt = 1, kBool = 2, kSeed = 3 };
 
 /// The declaration of one parameter, independent of the struct that holds it.
@@ -123,6 +123,6 @@ std::string validate_params(const ParamTable<Cfg>& table, const Cfg& c, const st
   }
 #define EVADE_PARAM_SEED(Cfg, path, meaning)                                               \
   ::evade::Param<Cfg> {                                                                    \
-    {#path, "-", ::evade::ParamType::kSeed, 0.0, 9007199254740992.0, false, meaning},     \
+    {#path, "-", ::evade::ParamType::kSeed, 0.0, 18446744073709551615.0, false, meaning}, \
         nullptr, nullptr, nullptr, [](Cfg& c) -> std::uint64_t* { return &c.path; }       \
   }

@@ -34,6 +34,8 @@
 #include <string>
 
 #include "evade/core/state.hpp"
+#include "evade/guidance/angles_measurement.hpp"
+#include "evade/guidance/los_geometry.hpp"
 #include "evade/guidance/los_rate_filter.hpp"
 
 namespace evade::guidance {
@@ -65,23 +67,6 @@ enum class CommandReason : std::uint8_t {
 const char* mode_name(GuidanceMode m) noexcept;
 const char* reason_name(CommandReason r) noexcept;
 
-/// Angle measurement of the threat (satellite-centred ECI-parallel frame, eq. 13–14).
-struct AnglesMeasurement {
-  std::int64_t utime_us = 0;       ///< time of validity [µs]
-  std::int64_t seq = 0;            ///< sensor sequence number
-  double elevation_rad = 0.0;      ///< ε ∈ [-π/2, π/2]
-  double azimuth_rad = 0.0;        ///< β ∈ [-2π, 2π] (wrapped internally)
-  double sigma_rad = 0.0;          ///< 1σ angle noise [rad], ≥ 0
-  bool has_rates = false;          ///< the sensor also gives ε̇, β̇ (rate-stabilised tracker)
-  double elevation_rate_radps = 0.0;
-  double azimuth_rate_radps = 0.0;
-  double rate_sigma_radps = 0.0;   ///< 1σ of the rates [rad/s], ≥ 0
-  bool has_range = false;          ///< range and range rate present (e.g. radar)
-  double range_m = 0.0;            ///< > 0
-  double range_rate_mps = 0.0;     ///< ṙ, negative when closing
-  bool valid = false;              ///< the sensor has a detection
-};
-
 /// Satellite navigation state in ECI (J2000).
 struct NavState {
   std::int64_t utime_us = 0;  ///< time of validity [µs]
@@ -90,17 +75,25 @@ struct NavState {
   bool valid = false;
 };
 
+/// The verdict of a watchdog outside the law (the node's input watchdog, or FDIR): the law
+/// commands SAFE while it is not kAlive. The law keeps its own stale checks besides.
+enum class WatchdogVerdict : std::uint8_t {
+  kAlive = 0,        ///< inputs are arriving
+  kInputSilent = 1,  ///< no valid measurement for longer than stale_limit_s
+};
+
 struct GuidanceInput {
   NavState nav;
   bool has_measurement = false;  ///< a new measurement arrived since the last step
   AnglesMeasurement meas;        ///< read only if has_measurement
   bool armed = false;            ///< operator/FDIR arm flag
+  WatchdogVerdict watchdog = WatchdogVerdict::kAlive;
 };
 
 struct ThrustCommand {
   std::int64_t utime_us = 0;          ///< time the command was computed [µs]
   GuidanceMode mode = GuidanceMode::kStandby;
-  Vec3 dir_eci = Vec3::Zero();        ///< unit thrust direction (zero when accel is 0)
+  Vec3 u_eci = Vec3::Zero();          ///< unit thrust direction (zero when accel is 0)
   double accel_mps2 = 0.0;            ///< commanded acceleration magnitude [m/s^2], ≥ 0
   CommandReason reason = CommandReason::kNoTrack;
 };
@@ -113,14 +106,14 @@ struct GuidanceStatus {
   double los_rate_radps = 0.0;        ///< ω_s estimate
   double los_rate_var_rad2ps2 = 0.0;  ///< its variance
   Vec3 e_theta_eci = Vec3::Zero();    ///< e_θ estimate (after the zenith flip)
-  Mat3 e_theta_cov = Mat3::Zero();    ///< its covariance (first order)
+  Mat3 e_theta_cov_eci = Mat3::Zero(); ///< its covariance (first order)
   Vec3 los_unit_eci = Vec3::Zero();   ///< estimated LOS unit vector e_r
   bool zenith_flipped = false;
   bool fallback_direction = false;
   bool zem_valid = false;
   double zem_m = 0.0;                 ///< eq. 7, when range is known and closing
-  bool tgo_valid = false;
-  double tgo_s = 0.0;                 ///< eq. 12, when range is known and closing
+  bool t_go_valid = false;
+  double t_go_s = 0.0;                ///< eq. 12, when range is known and closing
   double dv_used_mps = 0.0;
   double burn_s = 0.0;
   long cycles = 0;
@@ -128,21 +121,28 @@ struct GuidanceStatus {
   long meas_rejected = 0;             ///< beyond the chi-square gate
   long meas_invalid = 0;              ///< flagged valid but malformed, or flagged invalid
   long filter_reinits = 0;
+  long watchdog_cycles = 0;           ///< cycles held SAFE by the watchdog verdict
 };
 
+/// Defaults here; unit, range and meaning of every field in guidance_params.hpp (the one
+/// table every reader uses).
 struct GuidanceConfig {
-  double max_accel_mps2 = 1.0;        ///< (0, 100]
-  double dv_budget_mps = 100.0;       ///< (0, 1e4]
-  double max_burn_s = 600.0;          ///< (0, 1e5]
-  double stale_limit_s = 0.5;         ///< nav / measurement age limit (0, 60]
-  double nominal_cycle_s = 0.02;      ///< guidance period, for the budget limits (0, 10]
-  double rate_noise_threshold_radps = 0.0;  ///< ω_s at or below it ⇒ fallback [0, 1]
-  double rate_noise_k_sigma = 3.0;    ///< also fallback while ω_s ≤ k σ(ω_s)  [0, 100]
-  double zem_trigger_m = 1000.0;      ///< EVADE when range is known and ZEM < this (0, 1e8]
-  int min_track_updates = 2;          ///< accepted updates before TRACKING [1, 1000]
+  double max_accel_mps2 = 1.0;
+  double dv_budget_mps = 100.0;
+  double max_burn_s = 600.0;
+  double stale_limit_s = 0.5;
+  double rate_hz = 50.0;
+  double rate_noise_threshold_radps = 0.0;
+  double rate_noise_k_sigma = 3.0;
+  double zem_trigger_m = 1000.0;
+  int min_track_updates = 2;
+  bool armed = true;  ///< initial arm state of a run (the operator's evade_arm_t changes it)
   LosFilterConfig filter;
 
-  /// Empty when valid; otherwise "GuidanceConfig.<field> = <value> outside <range>".
+  /// The guidance period 1 / rate_hz [s] (the Δv and burn-time limits plan one cycle ahead).
+  double cycle_s() const noexcept { return 1.0 / rate_hz; }
+  /// Empty when valid; otherwise the table's error text for the first bad field
+  /// ("key 'guidance.max_accel_mps2' = '500' is invalid: expected a number in (0, 100] m/s^2").
   std::string validate() const;
 };
 
@@ -161,12 +161,45 @@ class GuidanceLaw {
   const LosRateFilter& filter() const noexcept { return filter_; }
 
  private:
+  /// Encounter state: what the law remembers of the current threat between cycles.
+  struct Encounter {
+    bool coast_latched = false;
+    CommandReason coast_reason = CommandReason::kPassedClosestApproach;
+    bool evade_started = false;
+    Vec3 u_at_evade_start_eci = Vec3::Zero();
+    bool raw_los_swung = false;  // a raw measurement's LOS is > 90° from u_at_evade_start
+    bool have_range = false;     // from the latest measurement carrying range
+    std::int64_t range_utime_us = 0;
+    double range_m = 0.0;
+    double range_rate_mps = 0.0;
+    bool have_tca_estimate = false;
+    std::int64_t tca_estimate_us = 0;
+  };
+  /// The LOS estimate at the cycle time.
+  struct LosEstimate {
+    LosFrame frame;
+    double rate_radps = 0.0;
+    double rate_var_rad2ps2 = 0.0;
+    Mat3 e_theta_cov_eci = Mat3::Zero();
+  };
+
   double to_s(std::int64_t utime_us) const noexcept {
     return 1e-6 * static_cast<double>(utime_us - time_origin_us_);
   }
+  bool is_stale(std::int64_t utime_us, std::int64_t now_us) const noexcept;
+  void account_previous_command(std::int64_t now_us) noexcept;
+  CommandReason accept_measurement(const GuidanceInput& in, std::int64_t now_us) noexcept;
+  void feed_filter(const AnglesMeasurement& m) noexcept;
+  CommandReason check_navigation(const NavState& nav, std::int64_t now_us) const noexcept;
+  CommandReason check_track(std::int64_t now_us) noexcept;
+  bool estimate_los(const NavState& nav, std::int64_t now_us, LosEstimate* est) noexcept;
+  void update_range_estimates(double los_rate_radps, std::int64_t now_us) noexcept;
+  CommandReason coast_trigger(const LosEstimate& est, std::int64_t now_us) const noexcept;
+  ThrustCommand evade(const LosEstimate& est, std::int64_t now_us) noexcept;
   ThrustCommand hold(GuidanceMode mode, CommandReason reason, std::int64_t now_us) noexcept;
 
   GuidanceConfig cfg_;
+  std::int64_t stale_us_ = 0;
   LosRateFilter filter_;
   GuidanceStatus status_;
   bool have_prev_step_ = false;
@@ -174,17 +207,7 @@ class GuidanceLaw {
   double prev_accel_mps2_ = 0.0;
   bool have_time_origin_ = false;
   std::int64_t time_origin_us_ = 0;  // filter time 0 (keeps double time small and exact)
-  bool coast_latched_ = false;
-  CommandReason coast_reason_ = CommandReason::kPassedClosestApproach;
-  bool evade_started_ = false;
-  Vec3 u_at_evade_start_eci_ = Vec3::Zero();
-  bool have_range_ = false;  // from the latest measurement carrying range
-  std::int64_t range_utime_us_ = 0;
-  double range_m_ = 0.0;
-  double range_rate_mps_ = 0.0;
-  bool was_closing_ = false;
-  bool have_tca_estimate_ = false;
-  std::int64_t tca_estimate_us_ = 0;
+  Encounter enc_;
 };
 
 }  // namespace evade::guidance

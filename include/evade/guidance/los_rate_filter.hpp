@@ -28,6 +28,7 @@
 #include <cstdint>
 
 #include "evade/core/state.hpp"
+#include "evade/guidance/angles_measurement.hpp"
 
 namespace evade::guidance {
 
@@ -42,18 +43,6 @@ struct LosFilterConfig {
   int max_consecutive_rejects = 5;  ///< re-initialise after this many rejections in a row
 };
 
-/// One measurement in the filter's terms (the guidance law converts AnglesMeasurement).
-struct LosMeasurement {
-  double t_s = 0.0;              ///< time of validity [s]
-  double elevation_rad = 0.0;
-  double azimuth_rad = 0.0;
-  double sigma_rad = 0.0;        ///< 1σ angle noise [rad] (floored by the config)
-  bool has_rates = false;
-  double elevation_rate_radps = 0.0;
-  double azimuth_rate_radps = 0.0;
-  double rate_sigma_radps = 0.0;  ///< 1σ of the rates [rad/s] (floored by the config)
-};
-
 enum class LosUpdateResult : std::uint8_t {
   kInitialized = 0,  ///< first measurement (or after a re-initialisation)
   kAccepted = 1,
@@ -66,11 +55,17 @@ class LosRateFilter {
   explicit LosRateFilter(const LosFilterConfig& cfg = {}) noexcept : cfg_(cfg) {}
 
   void reset() noexcept;
-  /// Predicts to m.t_s (if later) and updates. Re-initialises after a too-long gap.
-  LosUpdateResult update(const LosMeasurement& m) noexcept;
+  /// Predicts to t_s (the measurement's time of validity in the filter's time base, if
+  /// later) and updates with m's angles (and rates when m.has_rates; σ floored by the
+  /// config). Re-initialises after a too-long gap. m must be well formed.
+  LosUpdateResult update(const AnglesMeasurement& m, double t_s) noexcept;
   /// Predicted [u; u̇] and covariance at t_s (does not modify the filter). Requires
   /// initialized().
   void predict_to(double t_s, Vec3* u_eci, Vec3* u_dot_eci_ps, Mat6* cov) const noexcept;
+  /// The same, with only the LOS-rate block of the covariance (3×3): what the guidance law
+  /// needs each cycle, at a fraction of the cost of the full 6×6 prediction.
+  void predict_rate_to(double t_s, Vec3* u_eci, Vec3* u_dot_eci_ps,
+                       Mat3* rate_cov) const noexcept;
 
   bool initialized() const noexcept { return initialized_; }
   double time_s() const noexcept { return t_s_; }
@@ -93,9 +88,16 @@ class LosRateFilter {
   /// Covariance of ê_θ = u̇/|u̇| (first order: J P_u̇u̇ Jᵀ, J = (I − ê_θ ê_θᵀ)/ω_s). Zero
   /// matrix if ω_s = 0.
   Mat3 e_theta_covariance() const noexcept;
+  /// The same two for any (u̇, P_u̇u̇), e.g. a prediction (the members apply them to the
+  /// filter's own state). With ω_s = 0 the variance is the mean per tangent axis.
+  static double los_rate_variance(const Vec3& u_dot, const Mat3& rate_cov) noexcept;
+  static Mat3 e_theta_covariance(const Vec3& u_dot, const Mat3& rate_cov) noexcept;
 
  private:
-  void initialize(const LosMeasurement& m) noexcept;
+  void initialize(const AnglesMeasurement& m, double t_s) noexcept;
+  bool correct(const AnglesMeasurement& m, const Vec3& u, const Vec3& ud, Vec6* x,
+               Mat6* P) noexcept;
+  LosUpdateResult on_rejected(const AnglesMeasurement& m, double t_s, const Vec3& ud) noexcept;
   static void propagate_mean(const Vec3& u, const Vec3& u_dot, double dt_s, Vec3* u_out,
                              Vec3* u_dot_out) noexcept;
   void propagate_cov(const Vec3& u_new, double dt_s, Mat6* cov) const noexcept;

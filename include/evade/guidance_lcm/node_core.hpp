@@ -6,7 +6,8 @@
 //
 // Cycle shape (STYLE.md §2): drain LCM into the bounded queue (receive callback copies raw
 // bytes only) → decode + validate + seq/utime checks, newest valid message per channel is
-// the candidate (older ones superseded) → step the law → node watchdog → encode into a
+// the candidate (older ones superseded) → watchdog verdict (an input of the law) → step the
+// law → encode into a
 // preallocated buffer → publish command (seq +1) → status every status_divider cycles.
 // After construction nothing allocates (operator new) or throws.
 #pragma once
@@ -33,18 +34,17 @@
 
 namespace evade::guidance_lcm {
 
+/// Defaults here; unit, range and meaning in node_params.hpp. The staleness limit (edge,
+/// law and watchdog) is the law's guidance.stale_limit_s: one knob.
 struct NodeConfig {
   guidance::GuidanceConfig guidance;  ///< the law's parameters (validated by the law)
-  double stale_limit_s = 0.5;         ///< edge staleness and watchdog limit (0, 60] [s]
-  double future_tolerance_s = 0.05;   ///< accept utime up to now + this [0, 10] [s]
-  int queue_capacity = 16;            ///< bounded input queue [1, 4096]
-  int max_drain_per_cycle = 1024;     ///< LCM messages handled per drain() [1, 1e6]
-  int status_divider = 1;             ///< publish status every N cycles [1, 10000]
-  bool armed = true;                  ///< initial arm state (evade_arm_t changes it)
-  bool lockstep = false;              ///< subscribe to the sim clock
+  double future_tolerance_s = 0.05;
+  int queue_capacity = 16;
+  int max_drain_per_cycle = 1024;
+  int status_divider = 1;
+  bool lockstep = false; ///< subscribe to the sim clock
 
-  /// Empty when valid, else "NodeConfig.<field> = <value> outside <range>" (also checks
-  /// guidance.validate()).
+  /// Empty when valid, else the parameter tables' error text (node.*, then guidance.*).
   std::string validate() const;
 };
 
@@ -82,7 +82,7 @@ class GuidanceNode {
   const evade_thrust_cmd_t& last_command() const noexcept { return cmd_msg_; }
   const evade_guidance_status_t& last_status() const noexcept { return status_msg_; }
   std::int64_t cycles() const noexcept { return cycles_; }
-  std::int64_t watchdog_cycles() const noexcept { return watchdog_cycles_; }
+  std::int64_t watchdog_cycles() const noexcept { return law_.status().watchdog_cycles; }
   std::int64_t ticks_received() const noexcept { return ticks_received_; }
   std::int64_t ticks_missed() const noexcept { return ticks_missed_; }
   bool armed() const noexcept { return armed_; }
@@ -124,7 +124,6 @@ class GuidanceNode {
   bool have_angles_ = false;
   std::int64_t last_angles_utime_ = -1;
   std::int64_t cycles_ = 0;
-  std::int64_t watchdog_cycles_ = 0;
 
   // Lockstep tick.
   bool tick_pending_ = false;

@@ -12,18 +12,9 @@
 
 namespace evade::guidance_lcm {
 
-/// Allowed ranges (inclusive). Elevation per paper 000 eq. 13; azimuth in [-2pi, 2pi] as the
-/// law accepts it (it wraps internally).
+/// Allowed ranges (inclusive) of the fields the law does not see; a measurement's own
+/// limits are guidance::MeasurementLimits.
 struct Limits {
-  static constexpr double kMaxElevationRad = 1.5707963267948966;  // pi/2
-  static constexpr double kMinAzimuthRad = -6.283185307179586;    // -2 pi
-  static constexpr double kMaxAzimuthRad = 6.283185307179586;     // 2 pi
-  static constexpr double kMaxSigmaAngleRad = 0.5;                // a 30 deg 1-sigma is no data
-  // LOS rates reach V/r: 15 km/s at 1.5 cm is 1e6 rad/s, beyond any real encounter. The
-  // azimuth rate is bounded through beta_dot cos(eps) (beta_dot alone is unbounded at the pole).
-  static constexpr double kMaxAngleRateRadps = 1.0e6;
-  static constexpr double kMaxRangeM = 1.0e8;
-  static constexpr double kMaxRangeRateMps = 1.0e5;
   static constexpr double kMaxPositionM = 1.0e9;
   static constexpr double kMaxVelocityMps = 1.0e5;
   static constexpr double kUnitTolerance = 1e-6;                  // | |u| - 1 |

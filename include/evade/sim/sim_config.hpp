@@ -17,29 +17,40 @@
 
 namespace evade::sim {
 
+// Defaults are in the member initializers; unit, range and meaning of every field in
+// sim_params.hpp (the one table every reader uses).
+
 /// Angle sensor (satellite-centred ECI-parallel frame, paper 000 eq. 13–14). The default is
 /// the ideal sensor: noise-free angles plus their true rates at 50 Hz, no latency.
 struct SensorConfig {
-  double rate_hz = 50.0;          ///< sample rate (0, 1000]
-  double noise_rad = 0.0;         ///< 1σ white noise on ε and on β·cos ε (tangent) [rad]
-  double bias_rad = 0.0;          ///< constant bias added to ε and β [rad]
-  double latency_s = 0.0;         ///< delay from time of validity to delivery [s]
-  double dropout_prob = 0.0;      ///< probability a sample is lost [0, 1)
-  bool provide_rates = true;      ///< rate-stabilised tracker: also ε̇, β̇
-  double rate_noise_radps = 0.0;  ///< 1σ white noise on ε̇ and β̇ cos ε [rad/s]
-  bool provide_range = false;     ///< also range and range rate (radar)
-  double range_noise_m = 0.0;     ///< 1σ on range [m]
-  double range_rate_noise_mps = 0.0;  ///< 1σ on range rate [m/s]
+  double rate_hz = 50.0;
+  double noise_rad = 0.0;         ///< 1σ white noise on ε and on β·cos ε (tangent)
+  double bias_rad = 0.0;          ///< constant bias added to ε and β
+  double latency_s = 0.0;         ///< delay from time of validity to delivery
+  double dropout_prob = 0.0;
+  bool has_rates = true;          ///< rate-stabilised tracker: also ε̇, β̇
+  double rate_noise_radps = 0.0;  ///< 1σ white noise on ε̇ and β̇ cos ε
+  bool has_range = false;         ///< also range and range rate (radar)
+  double range_noise_m = 0.0;
+  double range_rate_noise_mps = 0.0;
   std::uint64_t seed = 1;         ///< std::mt19937_64 seed
 };
 
 /// Thruster: applies the command after latency_s, clipped to max_accel_mps2, with a random
 /// direction error (angle ~ N(0, direction_error_rad²) about a random axis ⊥ the command).
 struct ActuatorConfig {
-  double max_accel_mps2 = 100.0;    ///< hardware limit (0, 1000]
-  double direction_error_rad = 0.0; ///< 1σ pointing error [rad]
-  double latency_s = 0.0;           ///< command-to-thrust delay [s]
+  double max_accel_mps2 = 100.0;    ///< hardware limit
+  double direction_error_rad = 0.0; ///< 1σ pointing error
+  double latency_s = 0.0;           ///< command-to-thrust delay
   std::uint64_t seed = 2;
+};
+
+/// When the run starts and stops, relative to the nominal closest approach.
+struct EncounterConfig {
+  double search_s = 120.0;            ///< look for the nominal closest approach in [0, this]
+  double detect_before_tca_s = 10.0;  ///< start the simulation this long before it
+  double post_tca_s = 0.0;            ///< keep simulating this long after the closest approach
+  double max_duration_s = 3600.0;     ///< give up (no closest approach) after this long
 };
 
 struct SimConfig {
@@ -47,18 +58,13 @@ struct SimConfig {
   StateEci debris0;     ///< at the epoch (t = 0)
   GravityModel gravity = GravityModel::kTwoBodyJ2;
   EarthModel earth = kEarthDefault;
-  double encounter_search_s = 120.0;  ///< look for the nominal closest approach in [0, this]
-  double detect_before_tca_s = 10.0;  ///< start the simulation this long before the nominal TCA
-  double guidance_rate_hz = 50.0;     ///< exchange rate with the guidance (0, 1000]
-  double post_tca_s = 0.0;            ///< keep simulating this long after the closest approach
-  double max_duration_s = 3600.0;     ///< give up (no closest approach) after this long
-  bool armed = true;
-  guidance::GuidanceConfig guidance;
+  EncounterConfig encounter;
+  guidance::GuidanceConfig guidance;  ///< guidance.rate_hz is also the exchange rate
   SensorConfig sensor;
   ActuatorConfig actuator;
   AdaptiveOptions integrator = AdaptiveOptions::tight();
 
-  /// Throws std::invalid_argument naming the field, its value and the allowed range.
+  /// Throws std::invalid_argument with the parameter tables' error text.
   void validate() const;
 };
 

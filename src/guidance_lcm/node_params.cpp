@@ -1,0 +1,23 @@
+// NodeConfig parameter table (include/evade/guidance_lcm/node_params.hpp).
+#include "evade/guidance_lcm/node_params.hpp"
+
+namespace evade::guidance_lcm {
+namespace {
+
+using C = NodeConfig;
+
+const Param<C> kRows[] = {
+    EVADE_PARAM_REAL(C, future_tolerance_s, "s", 0.0, 10.0, false,
+                     "accept an input stamped up to this far in the future (clock skew)"),
+    EVADE_PARAM_INT(C, queue_capacity, "-", 1, 4096,
+                    "bounded input queue: the oldest message is dropped (and counted) beyond it"),
+    EVADE_PARAM_INT(C, max_drain_per_cycle, "-", 1, 1000000,
+                    "LCM messages handled per drain (bounds one cycle's input work)"),
+    EVADE_PARAM_INT(C, status_divider, "-", 1, 10000, "publish the status every N cycles"),
+};
+
+}  // namespace
+
+ParamTable<NodeConfig> node_params() noexcept { return make_param_table(kRows); }
+
+}  // namespace evade::guidance_lcm
