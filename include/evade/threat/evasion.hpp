@@ -38,7 +38,7 @@ Vec3 evasion_dv_rsw(double dv_mps, double alpha_rad, double theta_rad);
 struct EvasionOptions {
   int population = 60;            ///< ISRES population (paper's GA: 60)
   int max_evaluations = 1200;     ///< ≈ 60 × 20 generations
-  std::uint32_t seed = 1;         ///< NLopt RNG seed (reproducible runs)
+  std::uint64_t seed = 1;         ///< NLopt RNG seed (reproducible runs; up to 2^53)
   double alpha_min_rad = -1.5707963267948966;
   double alpha_max_rad = 1.5707963267948966;
   double theta_min_rad = -3.141592653589793;
