@@ -1,19 +1,20 @@
 // `evade plan threat-area`: paper 001 (Yu, Wang, Sun 2017) — the chaser's potential threat area
 // (sec. 2.2), the target's optimal evasive burn direction at fixed V_E (sec. 3, GA → ISRES),
 // the smallest eliminating burn (sec. 4.2, Fig. 8 / Table 3), and the transfer-time study
-// (Fig. 4). I/O only; the algorithms are in src/threat/.
-#include <chrono>
+// (Fig. 4). I/O only: the scenario is read by threat::read_threat_scenario and everything is
+// computed by threat::run_threat_study (src/threat/); this file parses, prints and plots.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli.hpp"
-#include "evade/core/constants.hpp"
-#include "evade/threat/evasion.hpp"
+#include "evade/threat/threat_scenario.hpp"
+#include "evade/threat/threat_study.hpp"
 
 namespace evade::cli {
 namespace {
@@ -36,8 +37,17 @@ struct ThreatCmdOptions {
   CLI::Option* seed_opt = nullptr;
 };
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// Command-line overrides of scenario values; the library validates them like the scenario's
+// (exit 2 on bad input).
+void apply_overrides(const ThreatCmdOptions& o, ThreatScenario& in) {
+  if (o.dv_opt->count() > 0) in.evasion_dv_mps = o.dv_mps;
+  if (o.dt_opt->count() > 0) in.threat.transfer_s = o.dt_transfer_s;
+  if (o.imp_opt->count() > 0) in.threat.impulses = o.impulses;
+  if (o.seed_opt->count() > 0) in.evasion.seed = o.seed;
+  if (!std::isfinite(in.evasion_dv_mps) || in.evasion_dv_mps < 0.0) {
+    throw std::invalid_argument("--dv = " + std::to_string(in.evasion_dv_mps) +
+                                " must be finite and >= 0");
+  }
 }
 
 nlohmann::json vec_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
@@ -57,8 +67,134 @@ nlohmann::json intervals_json(const ThreatArea& a) {
   return j;
 }
 
+// The inputs and the chaser's cost at t0 without evasion.
+nlohmann::json summary_json(const config::Scenario& sc, const ThreatScenario& in,
+                            const ThreatStudy& s) {
+  nlohmann::json j;
+  j["scenario"] = sc.source();
+  j["n_radps"] = in.geometry.n_radps;
+  j["period_s"] = s.period_s;
+  j["dt_transfer_s"] = in.threat.transfer_s;
+  j["impulses"] = in.threat.impulses;
+  j["dv_max_mps"] = in.threat.dv_max_mps;
+  j["target_inclination_deg"] = in.target_inclination_deg;
+  j["model"] =
+      "HCW (RSW) about the target's original circular orbit; evaded target modelled by linear "
+      "relative motion about that reference; chaser coasts then transfers in dt_transfer_s with "
+      "the N-impulse minimum-dv plan; sweep over one chaser period from t0 (t0 included)";
+  j["chaser_cost_t0_mps"] = s.chaser_cost_t0_mps;
+  j["two_impulse_cost_t0_mps"] = s.two_impulse_cost_t0_mps;
+  j["t0_bound_mps"] = s.t0_bound_mps;
+  return j;
+}
+
+// The optimal direction at V_E.
+void add_evasion_json(const ThreatStudy& s, nlohmann::json& j) {
+  const EvasionResult& r = s.evasion;
+  j["runtime_s"] = s.runtime_s;
+  j["dv_mps"] = r.dv_mps;
+  j["threat_arc_s"] = r.area.arc_s;
+  j["threat_arc_deg"] = r.area.arc_deg;
+  j["grid_arc_s"] = r.area.grid_arc_s;
+  j["intervals"] = intervals_json(r.area);
+  j["alpha_rad"] = r.alpha_rad;
+  j["theta_rad"] = r.theta_rad;
+  j["dv_vvlh_mps"] = vec_json(r.dv_vvlh_mps);
+  j["dv_rsw_mps"] = vec_json(r.dv_rsw_mps);
+  j["evaluations"] = r.evaluations;
+  j["decisions"] = counts_json(r.counts);
+}
+
+void add_elimination_json(const ThreatStudy& s, nlohmann::json& j) {
+  const EliminationResult& e = *s.elimination;
+  j["eliminating_dv_mps"] = e.eliminating_dv_mps;
+  j["eliminating_lower_bracket_mps"] = e.threatened_dv_mps;
+  j["eliminating_alpha_rad"] = e.best.alpha_rad;
+  j["eliminating_theta_rad"] = e.best.theta_rad;
+  j["eliminating_dv_vvlh_mps"] = vec_json(e.best.dv_vvlh_mps);
+  j["eliminating_to_dv_max_ratio"] = s.eliminating_to_dv_max_ratio;
+  j["eliminating_over_t0_bound"] = s.eliminating_over_t0_bound;
+  j["elimination_evaluations"] = e.evaluations;
+  j["elimination_bisection_steps"] = e.bisection_steps;
+  j["elimination_runtime_s"] = s.elimination_runtime_s;
+}
+
+nlohmann::json burn_row_json(const BurnSweepRow& row) {
+  const EvasionResult& q = row.evasion;
+  return {{"dv_mps", q.dv_mps},
+          {"threat_arc_s", q.area.arc_s},
+          {"threat_arc_deg", q.area.arc_deg},
+          {"alpha_rad", q.alpha_rad},
+          {"theta_rad", q.theta_rad},
+          {"intervals", intervals_json(q.area)},
+          {"evaluations", q.evaluations},
+          {"runtime_s", row.runtime_s}};
+}
+
+nlohmann::json transfer_row_json(const TransferStudyRow& r) {
+  nlohmann::json row = {{"dt_transfer_s", r.dt_transfer_s}};
+  for (int n = 2; n <= 4; ++n) {
+    row["cost_t0_mps_" + std::to_string(n) + "_impulses"] = r.cost_t0_mps[n - 2];
+  }
+  row["primer_max_t0"] = r.primer_max_t0;
+  row["primer_lower_bound_t0_mps"] = r.primer_lower_bound_t0_mps;
+  row["t0_bound_mps"] = r.t0_bound_mps;
+  if (r.elimination) {
+    row["eliminating_dv_mps"] = r.elimination->eliminating_dv_mps;
+    row["eliminating_alpha_rad"] = r.elimination->best.alpha_rad;
+    row["eliminating_theta_rad"] = r.elimination->best.theta_rad;
+    row["runtime_s"] = r.elimination_runtime_s;
+  }
+  return row;
+}
+
+nlohmann::json study_json(const config::Scenario& sc, const ThreatScenario& in,
+                          const ThreatStudy& s) {
+  nlohmann::json j = summary_json(sc, in, s);
+  add_evasion_json(s, j);
+  if (s.elimination) add_elimination_json(s, j);
+  if (!s.sweep_dv.empty()) {
+    j["sweep_dv"] = nlohmann::json::array();
+    for (const auto& row : s.sweep_dv) j["sweep_dv"].push_back(burn_row_json(row));
+  }
+  if (!s.sweep_transfer.empty()) {
+    j["sweep_transfer"] = nlohmann::json::array();
+    for (const auto& row : s.sweep_transfer) j["sweep_transfer"].push_back(transfer_row_json(row));
+  }
+  j["total_runtime_s"] = s.total_runtime_s;
+  j["parameters"] = sc.used();
+  return j;
+}
+
 void progress_elim(double lo, double hi) {
   std::fprintf(stderr, "  eliminating V_E in [%.3f, %.3f] m/s\n", lo, hi);
+}
+
+// Progress lines on stderr as each step finishes.
+ThreatStudyProgress stderr_progress() {
+  ThreatStudyProgress p;
+  p.optimizing = [](double dv_mps, int evals) {
+    std::fprintf(stderr, "threat-area: optimizing the burn direction at V_E = %.3f m/s (%d evals)\n",
+                 dv_mps, evals);
+  };
+  p.eliminating = [](double tol_mps) {
+    std::fprintf(stderr, "threat-area: bisection for the eliminating V_E (tol %.3f m/s)\n",
+                 tol_mps);
+  };
+  p.bisection = progress_elim;
+  p.burn_row = [](const BurnSweepRow& row) {
+    const EvasionResult& q = row.evasion;
+    std::fprintf(stderr, "  V_E = %8.3f m/s: arc %9.2f s (%7.3f deg), alpha %.4f theta %.4f\n",
+                 q.dv_mps, q.area.arc_s, q.area.arc_deg, q.alpha_rad, q.theta_rad);
+  };
+  p.transfer_row = [](const TransferStudyRow& r) {
+    const std::string elim =
+        r.elimination ? ", eliminating " + std::to_string(r.elimination->eliminating_dv_mps) + " m/s"
+                      : "";
+    std::fprintf(stderr, "  dT = %7.1f s: J(t0) = %.3f m/s, bound %.3f m/s%s\n", r.dt_transfer_s,
+                 r.j_t0_mps, r.t0_bound_mps, elim.c_str());
+  };
+  return p;
 }
 
 std::string find_plot_script() {
@@ -72,187 +208,51 @@ std::string find_plot_script() {
   return "scripts/plot_threat.py";
 }
 
+// Writes the JSON beside the PNG and runs scripts/plot_threat.py on it; false on failure.
+bool write_plot(const std::string& png, const nlohmann::json& j) {
+  const std::string tmp = png + ".json";
+  std::ofstream(tmp) << j.dump(2) << "\n";
+  const std::string cmd =
+      "python3 '" + find_plot_script() + "' '" + tmp + "' '" + png + "'";
+  if (std::system(cmd.c_str()) != 0) {
+    std::fprintf(stderr, "threat-area: plot failed: %s\n", cmd.c_str());
+    return false;
+  }
+  std::fprintf(stderr, "threat-area: wrote %s (data %s)\n", png.c_str(), tmp.c_str());
+  return true;
+}
+
+void print_text(const ThreatScenario& in, const ThreatStudy& s) {
+  const EvasionResult& r = s.evasion;
+  std::printf("threat area (paper 001): dT = %.1f s, %d impulses, dv_max = %.1f m/s\n",
+              in.threat.transfer_s, in.threat.impulses, in.threat.dv_max_mps);
+  std::printf("  chaser cost at t0 without evasion: %.3f m/s\n", s.chaser_cost_t0_mps);
+  std::printf("  V_E = %.3f m/s: arc %.2f s (%.3f deg), alpha %.4f rad, theta %.4f rad, "
+              "%ld evaluations, %.3f s\n",
+              r.dv_mps, r.area.arc_s, r.area.arc_deg, r.alpha_rad, r.theta_rad, r.evaluations,
+              s.runtime_s);
+  if (s.elimination) {
+    std::printf("  eliminating V_E = %.3f m/s (%.1f%% of dv_max; t0 bound %.3f m/s)\n",
+                s.elimination->eliminating_dv_mps, 100.0 * s.eliminating_to_dv_max_ratio,
+                s.t0_bound_mps);
+  }
+}
+
 int run_threat_area(const ThreatCmdOptions& o) {
   const config::Scenario sc = load_scenario(o.common);
-  const double mu = sc.get_double("earth.mu_m3ps2", 1e13, 1e15, 3.986005e14);
-  const double re = sc.get_double("earth.re_m", 1e6, 1e7, 6371110.0);
-  const double alt = sc.get_double("target.altitude_m", 1e5, 1e8);
-  const double incl_deg = sc.get_double("target.inclination_deg", 0.0, 180.0, 0.0);
-  ThreatGeometry g;
-  const double a_m = re + alt;
-  g.n_radps = std::sqrt(mu / (a_m * a_m * a_m));
-  g.chaser0_rsw << sc.get_vec3("chaser.relative_rsw_m", -1e8, 1e8),
-      sc.get_vec3("chaser.relative_rsw_mps", -1e4, 1e4);
-  ThreatOptions to;
-  to.dv_max_mps = sc.get_double("chaser.dv_max_mps", 1e-6, 1e5);
-  to.transfer_s = sc.get_double("transfer.dt_s", 1e-3, 1e6);
-  to.impulses = static_cast<int>(sc.get_int("transfer.impulses", 2, 4));
-  to.step_s = sc.get_double("sweep.step_s", 1e-3, 1e5, 5.0);
-  to.edge_tol_s = sc.get_double("sweep.edge_tol_s", 0.0, 1e4, 0.05);
-  to.threads = static_cast<int>(sc.get_int("sweep.threads", 1, 64, 2));
-  double dv_mps = sc.get_double("evasion.dv_mps", 0.0, 1e5, 20.0);
-  EvasionOptions eo;
-  eo.population = static_cast<int>(sc.get_int("evasion.population", 2, 100000, 60));
-  eo.max_evaluations = static_cast<int>(sc.get_int("evasion.max_evaluations", 1, 100000000, 1200));
-  eo.seed = static_cast<std::uint32_t>(sc.get_int("evasion.seed", 0, 4294967295L, 1));
-  eo.alpha_min_rad = sc.get_double("evasion.alpha_min_deg", -90.0, 90.0, -90.0) * kDegToRad;
-  eo.alpha_max_rad = sc.get_double("evasion.alpha_max_deg", -90.0, 90.0, 90.0) * kDegToRad;
-  eo.theta_min_rad = sc.get_double("evasion.theta_min_deg", -180.0, 180.0, -180.0) * kDegToRad;
-  eo.theta_max_rad = sc.get_double("evasion.theta_max_deg", -180.0, 180.0, 180.0) * kDegToRad;
-  const double elim_tol = sc.get_double("elimination.tol_mps", 1e-6, 1e3, 0.05);
-  sc.mark_used("description");
-  sc.check_all_used();
-  // Command-line overrides go through the same validation in the library (exit 2 on bad).
-  if (o.dv_opt->count() > 0) dv_mps = o.dv_mps;
-  if (o.dt_opt->count() > 0) to.transfer_s = o.dt_transfer_s;
-  if (o.imp_opt->count() > 0) to.impulses = o.impulses;
-  if (o.seed_opt->count() > 0) eo.seed = o.seed;
-  if (!std::isfinite(dv_mps) || dv_mps < 0.0) {
-    throw std::invalid_argument("--dv = " + std::to_string(dv_mps) + " must be finite and >= 0");
-  }
-
-  const auto t_all = std::chrono::steady_clock::now();
-  const ThreatAreaSolver solver(g, to);
-  nlohmann::json j;
-  j["scenario"] = sc.source();
-  j["n_radps"] = g.n_radps;
-  j["period_s"] = solver.period_s();
-  j["dt_transfer_s"] = to.transfer_s;
-  j["impulses"] = to.impulses;
-  j["dv_max_mps"] = to.dv_max_mps;
-  j["target_inclination_deg"] = incl_deg;
-  j["model"] =
-      "HCW (RSW) about the target's original circular orbit; evaded target modelled by linear "
-      "relative motion about that reference; chaser coasts then transfers in dt_transfer_s with "
-      "the N-impulse minimum-dv plan; sweep over one chaser period from t0 (t0 included)";
-  const RendezvousPlan plan0 = solver.min_cost_plan(0.0, Vec3::Zero());
-  j["chaser_cost_t0_mps"] = plan0.cost_mps;
-  j["two_impulse_cost_t0_mps"] = solver.transfer().two_impulse_cost(
-      solver.required_change(0.0, Vec3::Zero()));
-  j["t0_bound_mps"] = to.dv_max_mps - plan0.cost_mps;
-
-  std::fprintf(stderr, "threat-area: optimizing the burn direction at V_E = %.3f m/s (%d evals)\n",
-               dv_mps, eo.max_evaluations);
-  const auto t_opt = std::chrono::steady_clock::now();
-  const EvasionResult r = optimize_evasion(solver, dv_mps, eo);
-  j["runtime_s"] = seconds_since(t_opt);
-  j["dv_mps"] = dv_mps;
-  j["threat_arc_s"] = r.area.arc_s;
-  j["threat_arc_deg"] = r.area.arc_deg;
-  j["grid_arc_s"] = r.area.grid_arc_s;
-  j["intervals"] = intervals_json(r.area);
-  j["alpha_rad"] = r.alpha_rad;
-  j["theta_rad"] = r.theta_rad;
-  j["dv_vvlh_mps"] = vec_json(r.dv_vvlh_mps);
-  j["dv_rsw_mps"] = vec_json(r.dv_rsw_mps);
-  j["evaluations"] = r.evaluations;
-  j["decisions"] = counts_json(r.counts);
-
-  if (o.eliminate) {
-    std::fprintf(stderr, "threat-area: bisection for the eliminating V_E (tol %.3f m/s)\n",
-                 elim_tol);
-    const auto t_el = std::chrono::steady_clock::now();
-    const EliminationResult e = find_eliminating_dv(solver, eo, elim_tol, progress_elim);
-    j["eliminating_dv_mps"] = e.eliminating_dv_mps;
-    j["eliminating_lower_bracket_mps"] = e.threatened_dv_mps;
-    j["eliminating_alpha_rad"] = e.best.alpha_rad;
-    j["eliminating_theta_rad"] = e.best.theta_rad;
-    j["eliminating_dv_vvlh_mps"] = vec_json(e.best.dv_vvlh_mps);
-    j["eliminating_to_dv_max_ratio"] = e.eliminating_dv_mps / to.dv_max_mps;
-    j["eliminating_over_t0_bound"] = e.eliminating_dv_mps / e.bound_mps;
-    j["elimination_evaluations"] = e.evaluations;
-    j["elimination_bisection_steps"] = e.bisection_steps;
-    j["elimination_runtime_s"] = seconds_since(t_el);
-  }
-
-  if (!o.sweep_dv.empty()) {
-    nlohmann::json rows = nlohmann::json::array();
-    for (double v : o.sweep_dv) {
-      const auto t1 = std::chrono::steady_clock::now();
-      const EvasionResult q = optimize_evasion(solver, v, eo);
-      std::fprintf(stderr, "  V_E = %8.3f m/s: arc %9.2f s (%7.3f deg), alpha %.4f theta %.4f\n",
-                   v, q.area.arc_s, q.area.arc_deg, q.alpha_rad, q.theta_rad);
-      rows.push_back({{"dv_mps", v},
-                      {"threat_arc_s", q.area.arc_s},
-                      {"threat_arc_deg", q.area.arc_deg},
-                      {"alpha_rad", q.alpha_rad},
-                      {"theta_rad", q.theta_rad},
-                      {"intervals", intervals_json(q.area)},
-                      {"evaluations", q.evaluations},
-                      {"runtime_s", seconds_since(t1)}});
-    }
-    j["sweep_dv"] = rows;
-  }
-
-  if (!o.sweep_transfer.empty()) {
-    nlohmann::json rows = nlohmann::json::array();
-    for (double T : o.sweep_transfer) {
-      ThreatOptions tt = to;
-      tt.transfer_s = T;
-      const ThreatAreaSolver s2(g, tt);
-      nlohmann::json row = {{"dt_transfer_s", T}};
-      const Vec6 d0 = s2.required_change(0.0, Vec3::Zero());
-      for (int n = 2; n <= 4; ++n) {
-        SqpOptions so;
-        so.impulses = n;
-        so.starts = 8;
-        row["cost_t0_mps_" + std::to_string(n) + "_impulses"] =
-            optimize_rendezvous(s2.transfer(), d0, so).cost_mps;
-      }
-      const PrimerBound pb = s2.transfer().primer_bound(d0);
-      row["primer_max_t0"] = pb.primer_max;
-      row["primer_lower_bound_t0_mps"] = pb.lower_bound_mps;
-      const double jt0 = s2.min_cost_plan(0.0, Vec3::Zero()).cost_mps;
-      row["t0_bound_mps"] = tt.dv_max_mps - jt0;
-      if (o.eliminate) {
-        const auto t1 = std::chrono::steady_clock::now();
-        const EliminationResult e = find_eliminating_dv(s2, eo, elim_tol, nullptr);
-        row["eliminating_dv_mps"] = e.eliminating_dv_mps;
-        row["eliminating_alpha_rad"] = e.best.alpha_rad;
-        row["eliminating_theta_rad"] = e.best.theta_rad;
-        row["runtime_s"] = seconds_since(t1);
-      }
-      std::fprintf(stderr, "  dT = %7.1f s: J(t0) = %.3f m/s, bound %.3f m/s%s\n", T, jt0,
-                   tt.dv_max_mps - jt0,
-                   o.eliminate ? (", eliminating " +
-                                  std::to_string(row["eliminating_dv_mps"].get<double>()) +
-                                  " m/s").c_str()
-                               : "");
-      rows.push_back(row);
-    }
-    j["sweep_transfer"] = rows;
-  }
-  j["total_runtime_s"] = seconds_since(t_all);
-  j["parameters"] = sc.used();
-
-  if (!o.plot.empty()) {
-    const std::string tmp = o.plot + ".json";
-    std::ofstream(tmp) << j.dump(2) << "\n";
-    const std::string cmd = "/usr/bin/python3 '" + find_plot_script() + "' '" + tmp + "' '" +
-                            o.plot + "'";
-    if (std::system(cmd.c_str()) != 0) {
-      std::fprintf(stderr, "threat-area: plot failed: %s\n", cmd.c_str());
-      return 1;
-    }
-    std::fprintf(stderr, "threat-area: wrote %s (data %s)\n", o.plot.c_str(), tmp.c_str());
-  }
-
+  ThreatScenario in = read_threat_scenario(sc);
+  apply_overrides(o, in);
+  ThreatStudyRequest request;
+  request.eliminate = o.eliminate;
+  request.sweep_dv_mps = o.sweep_dv;
+  request.sweep_transfer_s = o.sweep_transfer;
+  const ThreatStudy study = run_threat_study(in, request, stderr_progress());
+  const nlohmann::json j = study_json(sc, in, study);
+  if (!o.plot.empty() && !write_plot(o.plot, j)) return 1;
   if (o.common.json) {
     print_json(j);
   } else {
-    std::printf("threat area (paper 001): dT = %.1f s, %d impulses, dv_max = %.1f m/s\n",
-                to.transfer_s, to.impulses, to.dv_max_mps);
-    std::printf("  chaser cost at t0 without evasion: %.3f m/s\n", plan0.cost_mps);
-    std::printf("  V_E = %.3f m/s: arc %.2f s (%.3f deg), alpha %.4f rad, theta %.4f rad, "
-                "%ld evaluations, %.3f s\n",
-                dv_mps, r.area.arc_s, r.area.arc_deg, r.alpha_rad, r.theta_rad, r.evaluations,
-                j["runtime_s"].get<double>());
-    if (o.eliminate) {
-      std::printf("  eliminating V_E = %.3f m/s (%.1f%% of dv_max; t0 bound %.3f m/s)\n",
-                  j["eliminating_dv_mps"].get<double>(),
-                  100.0 * j["eliminating_to_dv_max_ratio"].get<double>(),
-                  j["t0_bound_mps"].get<double>());
-    }
+    print_text(in, study);
   }
   return 0;
 }
