@@ -1,4 +1,4 @@
-// The node's two schedulers (design_node.md NODE-RT-*):
+// The node's two schedulers (docs/GUIDANCE_NODE.md NODE-RT-*):
 //  - fixed rate: absolute CLOCK_MONOTONIC deadlines (clock_nanosleep TIMER_ABSTIME), one
 //    cycle per period; a cycle that ends after the next deadline is an overrun, counted, and
 //    the schedule is re-anchored to the next future period boundary (no burst of catch-up

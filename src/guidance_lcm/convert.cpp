@@ -1,4 +1,4 @@
-// LCM <-> guidance struct conversions (design_node.md NODE-IF-2): field by field, bit-exact.
+// LCM <-> guidance struct conversions (docs/GUIDANCE_NODE.md NODE-IF-2): field by field, bit-exact.
 #include "evade/guidance_lcm/convert.hpp"
 
 namespace evade::guidance_lcm {

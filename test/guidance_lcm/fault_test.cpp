@@ -1,4 +1,4 @@
-// Fault tests of the guidance node over memq:// (design_node.md NODE-IN-1..5, NODE-WD-1,
+// Fault tests of the guidance node over memq:// (docs/GUIDANCE_NODE.md NODE-IN-1..5, NODE-WD-1,
 // NODE-OUT-1). Each case: no crash, no thrust from bad data (the commands equal those of a
 // reference node that saw only the good messages), and every published input message is
 // counted exactly once: consumed + rejected + stale + superseded + dropped = published.

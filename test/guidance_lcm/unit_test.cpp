@@ -1,6 +1,6 @@
 // Unit tests of the guidance_lcm pieces: validation ranges, bit-exact conversion, the seq
 // tracker, the bounded queue's drop-oldest policy and the cycle statistics
-// (design_node.md NODE-IN-2..4, NODE-IF-2, NODE-RT-3).
+// (docs/GUIDANCE_NODE.md NODE-IN-2..4, NODE-IF-2, NODE-RT-3).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// LCM channel names used by the guidance node and the simulator link (design_node.md
+// LCM channel names used by the guidance node and the simulator link (docs/GUIDANCE_NODE.md
 // NODE-IF-1). The node subscribes and publishes through the C API with these C strings.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Conversions between the LCM messages and the guidance law's plain structs
-// (design_node.md NODE-IF-2). Bit-exact for every double, so a lockstep run over LCM
+// (docs/GUIDANCE_NODE.md NODE-IF-2). Bit-exact for every double, so a lockstep run over LCM
 // computes exactly what the in-process run computes. Call validate() (validate.hpp) on a
 // received message before converting it. No allocation, no throw.
 #pragma once

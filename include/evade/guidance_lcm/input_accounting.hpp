@@ -1,5 +1,5 @@
 // Input accounting for the guidance node: every message received on an input channel is
-// counted exactly once as consumed, rejected, stale, superseded or dropped (design_node.md
+// counted exactly once as consumed, rejected, stale, superseded or dropped (docs/GUIDANCE_NODE.md
 // NODE-IN-1). The invariant total() == received is what the fault tests check.
 #pragma once
 

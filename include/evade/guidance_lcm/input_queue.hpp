@@ -1,6 +1,6 @@
 // Bounded queue of raw input messages (fixed slots, no allocation after construction).
 // The LCM receive callback only copies bytes in; the node cycle decodes and validates.
-// When full, the OLDEST entry is discarded and counted as dropped (design_node.md
+// When full, the OLDEST entry is discarded and counted as dropped (docs/GUIDANCE_NODE.md
 // NODE-IN-3): for guidance the newest data matter most.
 #pragma once
 

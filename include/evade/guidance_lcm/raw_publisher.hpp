@@ -1,6 +1,6 @@
 // Allocation-free LCM publishing: lcm::LCM::publish(channel, &msg) allocates a buffer on
 // every call (LCM 1.3.1), so we encode into a buffer sized once at construction and send
-// the raw bytes through the C API (design_node.md NODE-RT-2). Only for fixed-size types.
+// the raw bytes through the C API (docs/GUIDANCE_NODE.md NODE-RT-2). Only for fixed-size types.
 #pragma once
 
 #include <cstdint>

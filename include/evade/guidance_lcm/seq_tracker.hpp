@@ -1,4 +1,4 @@
-// Per-channel sequence-number check (design_node.md NODE-IN-4): a seq equal to the last
+// Per-channel sequence-number check (docs/GUIDANCE_NODE.md NODE-IN-4): a seq equal to the last
 // accepted one is a duplicate, a lower one is out of order (both stale: we already have
 // newer data); a jump of more than one counts the missing messages as gaps (lost upstream,
 // e.g. in the network) but the message itself is accepted.

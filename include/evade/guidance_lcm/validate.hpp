@@ -1,4 +1,4 @@
-// Field validation of received LCM messages at the node's edge (design_node.md NODE-IN-2):
+// Field validation of received LCM messages at the node's edge (docs/GUIDANCE_NODE.md NODE-IN-2):
 // NaN survives LCM encoding and the generated decode checks only the type fingerprint and
 // the length, so every numeric field is checked here before anything reaches the law.
 #pragma once
