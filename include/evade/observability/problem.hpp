@@ -5,7 +5,7 @@
 // Frames.
 //  * RSW (evade/dynamics/hcw.hpp): x radial outward, y along track, z orbit normal. All the
 //    dynamics are computed in RSW with the foundation's HCW STM.
-//  * Paper frame "P" (paper Fig. 1, our reading, see shared/seeds/README.md §004): x toward
+//  * Paper frame "P" (paper Fig. 1, our reading, see docs/REFERENCES.md, paper 004): x toward
 //    the Earth's centre (-R), y opposite the velocity (-S), z = x × y = +W (orbit normal).
 //    It is RSW rotated by π about the normal: v_P = C_P_RSW v_RSW with the constant
 //    C_P_RSW = diag(-1, -1, +1) (a proper rotation, its own inverse). The HCW equations are
