@@ -130,11 +130,11 @@ void GuidanceLaw::feed_filter(const AnglesMeasurement& m) noexcept {
   if (!filter_.initialized() || t_s - filter_.last_update_s() > cfg_.filter.reinit_gap_s) {
     enc_ = Encounter{};  // a new track: forget the previous encounter
   }
+  const LosUpdateResult r = filter_.update(m, t_s);
   if (enc_.evade_started &&
-      los_unit_from_angles(m.elevation_rad, m.azimuth_rad).dot(enc_.u_at_evade_start_eci) < 0.0) {
+      filter_.last_measured_u_eci().dot(enc_.u_at_evade_start_eci) < 0.0) {
     enc_.raw_los_swung = true;
   }
-  const LosUpdateResult r = filter_.update(m, t_s);
   if (m.has_range && r != LosUpdateResult::kRejected && r != LosUpdateResult::kOutOfOrder) {
     enc_.have_range = true;
     enc_.range_utime_us = m.utime_us;

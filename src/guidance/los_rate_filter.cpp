@@ -12,8 +12,6 @@ namespace evade::guidance {
 
 namespace {
 
-using Mat26 = Eigen::Matrix<double, 2, 6>;
-using Mat46 = Eigen::Matrix<double, 4, 6>;
 
 // Orthonormal basis (t1, t2) of the plane perpendicular to the unit vector u.
 void tangent_basis(const Vec3& u, Vec3* t1, Vec3* t2) noexcept {
@@ -31,48 +29,105 @@ void tangent_basis(const Vec3& u, Vec3* t1, Vec3* t2) noexcept {
 
 Mat3 tangent_projector(const Vec3& u) noexcept { return Mat3::Identity() - u * u.transpose(); }
 
-// Π A Π for Π = I − u uᵀ, as rank-one corrections (A − u bᵀ − a uᵀ + s u uᵀ with a = A u,
-// b = Aᵀ u, s = uᵀ A u): the same matrix as the triple product at a tenth of the cost.
-Mat3 project_block(const Vec3& u, const Mat3& A) noexcept {
-  const Vec3 a = A * u;
-  const Vec3 b = A.transpose() * u;
-  const double s = u.dot(a);
-  return A - u * b.transpose() - a * u.transpose() + (s * u) * u.transpose();
+// Π A Π for Π = I − u uᵀ (u a unit vector), as rank-one corrections: with a = A u,
+// c = Aᵀ u − (uᵀ A u) u, Π A Π = A − a uᵀ − u cᵀ. The same matrix as the triple product at a
+// tenth of the cost; written out element by element (3×3, fixed).
+inline Mat3 project_block(const Vec3& u, const Mat3& A) noexcept {
+  double a[3];
+  double b[3];
+  for (int i = 0; i < 3; ++i) {
+    a[i] = A(i, 0) * u(0) + A(i, 1) * u(1) + A(i, 2) * u(2);
+    b[i] = A(0, i) * u(0) + A(1, i) * u(1) + A(2, i) * u(2);
+  }
+  const double s = u(0) * a[0] + u(1) * a[1] + u(2) * a[2];
+  Mat3 out;
+  for (int j = 0; j < 3; ++j) {
+    const double cj = b[j] - s * u(j);
+    for (int i = 0; i < 3; ++i) out(i, j) = A(i, j) - a[i] * u(j) - u(i) * cj;
+  }
+  return out;
 }
 
-// P ← T P Tᵀ, T = diag(Π, Π): removes the along-u components (fixed by the constraints).
+// cos φ and sin φ; below 0.01 rad by their Taylor series to φ⁸ / φ⁹ (truncation < 3e-21,
+// far below double rounding), which avoids the library call on every guidance cycle.
+void cos_sin(double phi, double* c, double* s) noexcept {
+  if (std::abs(phi) >= 0.01) {
+    *c = std::cos(phi);
+    *s = std::sin(phi);
+    return;
+  }
+  const double p2 = phi * phi;
+  *c = 1.0 - p2 / 2.0 * (1.0 - p2 / 12.0 * (1.0 - p2 / 30.0 * (1.0 - p2 / 56.0)));
+  *s = phi * (1.0 - p2 / 6.0 * (1.0 - p2 / 20.0 * (1.0 - p2 / 42.0 * (1.0 - p2 / 72.0))));
+}
+
+// The block of P at (r0, c0) ← Π block Π, in place (the same rank-one form as above).
+void project_block_in_place(const Vec3& u, int r0, int c0, Mat6* P) noexcept {
+  Mat6& p = *P;
+  double a[3];
+  double b[3];
+  for (int i = 0; i < 3; ++i) {
+    a[i] = p(r0 + i, c0) * u(0) + p(r0 + i, c0 + 1) * u(1) + p(r0 + i, c0 + 2) * u(2);
+    b[i] = p(r0, c0 + i) * u(0) + p(r0 + 1, c0 + i) * u(1) + p(r0 + 2, c0 + i) * u(2);
+  }
+  const double s = u(0) * a[0] + u(1) * a[1] + u(2) * a[2];
+  for (int j = 0; j < 3; ++j) {
+    const double cj = b[j] - s * u(j);
+    for (int i = 0; i < 3; ++i) p(r0 + i, c0 + j) -= a[i] * u(j) + u(i) * cj;
+  }
+}
+
+// P ← T P Tᵀ, T = diag(Π, Π): removes the along-u components (fixed by the constraints),
+// and makes P exactly symmetric.
 void project_covariance(const Vec3& u, Mat6* P) noexcept {
-  const Mat3 paa = project_block(u, P->topLeftCorner<3, 3>());
-  const Mat3 par = project_block(u, P->topRightCorner<3, 3>());
-  const Mat3 prr = project_block(u, P->bottomRightCorner<3, 3>());
-  P->topLeftCorner<3, 3>() = 0.5 * (paa + paa.transpose());
-  P->topRightCorner<3, 3>() = par;
-  P->bottomLeftCorner<3, 3>() = par.transpose();
-  P->bottomRightCorner<3, 3>() = 0.5 * (prr + prr.transpose());
+  project_block_in_place(u, 0, 0, P);
+  project_block_in_place(u, 0, 3, P);
+  project_block_in_place(u, 3, 3, P);
+  Mat6& p = *P;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) p(3 + i, j) = p(j, 3 + i);
+    for (int j = i + 1; j < 3; ++j) {
+      p(i, j) = p(j, i) = 0.5 * (p(i, j) + p(j, i));
+      p(3 + i, 3 + j) = p(3 + j, 3 + i) = 0.5 * (p(3 + i, 3 + j) + p(3 + j, 3 + i));
+    }
+  }
 }
 
-// Kalman update with N measurement rows; returns false (no change) if gated out.
+// Kalman update with N (2 or 4) measurement rows; returns false (no change) if gated out.
+// S is symmetric positive definite (R > 0 is added) and at most 4×4, so its inverse is
+// formed directly (Eigen's closed form for N ≤ 4), which costs a fraction of a factorisation
+// followed by six back-substitutions; a non-finite inverse rejects the measurement.
+// H's rows are t1ᵀ, t2ᵀ on u (and, for N = 4, on u̇): HP and HPHᵀ are formed from those
+// rows directly instead of multiplying through H's zeros.
 template <int N>
-bool kalman_update(const Eigen::Matrix<double, N, 6>& H, const Eigen::Matrix<double, N, 1>& y,
+bool kalman_update(const Vec3& t1, const Vec3& t2, const Eigen::Matrix<double, N, 1>& y,
                    const Eigen::Matrix<double, N, N>& R, double gate, Vec6* x, Mat6* P,
                    double* nis) noexcept {
   using MatN = Eigen::Matrix<double, N, N>;
-  const Eigen::Matrix<double, N, 6> hp = H * (*P);
-  const MatN S = hp * H.transpose() + R;
-  const Eigen::LDLT<MatN> ldlt(S);
-  if (ldlt.info() != Eigen::Success) {
+  const Vec3* t[2] = {&t1, &t2};
+  Eigen::Matrix<double, N, 6> hp;
+  for (int i = 0; i < N; ++i) {
+    const int block = 3 * (i / 2);  // rows 0, 1: angles on u; rows 2, 3: rates on u̇
+    hp.row(i) = t[i % 2]->transpose() * P->template middleRows<3>(block);
+  }
+  MatN S = R;
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) S(i, j) += hp.row(i).template segment<3>(3 * (j / 2)).dot(*t[j % 2]);
+  }
+  const MatN s_inv = S.inverse();
+  if (!s_inv.allFinite()) {
     *nis = INFINITY;
     return false;
   }
-  *nis = y.dot(ldlt.solve(y));
+  *nis = y.dot(s_inv * y);
   if (!(*nis <= gate)) return false;
-  // K = P Hᵀ S⁻¹ = (S⁻¹ H P)ᵀ (S symmetric). Joseph form, expanded so that no 6×6×6
-  // product is needed: (I − KH) P (I − KH)ᵀ + K R Kᵀ = P − K(HP) − (K(HP))ᵀ + K S Kᵀ (valid
-  // for any gain, like the factored form).
-  const Eigen::Matrix<double, 6, N> K = ldlt.solve(hp).transpose();
+  // K = P Hᵀ S⁻¹ = (HP)ᵀ S⁻¹, and P⁺ = P − K(HP), symmetrised. With this (optimal) gain the
+  // Joseph form (I − KH)P(I − KH)ᵀ + KRKᵀ expands to exactly P − K(HP) (its K S Kᵀ term
+  // equals (K(HP))ᵀ); the caller projects P⁺ on the tangent plane, which keeps it positive
+  // semi-definite there.
+  const Eigen::Matrix<double, 6, N> K = hp.transpose() * s_inv;
   *x += K * y;
-  const Mat6 khp = K * hp;
-  const Mat6 p_new = *P - khp - khp.transpose() + K * (S * K.transpose());
+  const Mat6 p_new = *P - K * hp;
   *P = 0.5 * (p_new + p_new.transpose());
   return true;
 }
@@ -85,13 +140,12 @@ void LosRateFilter::reset() noexcept {
 }
 
 void LosRateFilter::initialize(const AnglesMeasurement& m, double t_s) noexcept {
-  u_ = los_unit_from_angles(m.elevation_rad, m.azimuth_rad);
+  u_ = z_;
   const Mat3 pi = tangent_projector(u_);
   const double sa = std::max(m.sigma_angle_rad, cfg_.angle_sigma_floor_rad);
   double sr = cfg_.init_rate_sigma_radps;
   if (m.has_rates) {
-    u_dot_ = pi * los_unit_rate_from_angle_rates(m.elevation_rad, m.azimuth_rad,
-                                                 m.elevation_rate_radps, m.azimuth_rate_radps);
+    u_dot_ = pi * zd_;
     sr = std::max(m.sigma_rate_radps, cfg_.rate_sigma_floor_radps);
   } else {
     u_dot_ = Vec3::Zero();
@@ -120,15 +174,16 @@ void LosRateFilter::propagate_mean(const Vec3& u, const Vec3& u_dot, double dt_s
     return;
   }
   // Constant-rate great-circle motion: rotation by φ = ω_s Δt in the plane of u and u̇.
-  const double c = std::cos(phi);
-  const double s = std::sin(phi);
+  double c = 0.0;
+  double s = 0.0;
+  cos_sin(phi, &c, &s);
   *u_out = c * u + (s / w) * u_dot;
   *u_dot_out = c * u_dot - (s * w) * u;
 }
 
 // F P Fᵀ + Q with F = [[I, Δt I], [0, I]], by blocks (F's identity structure makes every
-// block a sum of 3×3 terms), then projected on the tangent plane of u_new.
-void LosRateFilter::propagate_cov(const Vec3& u_new, double dt_s, Mat6* cov) const noexcept {
+// block a sum of 3×3 terms). Not yet projected on the tangent plane of the new u.
+void LosRateFilter::propagate_cov(double dt_s, Mat6* cov) const noexcept {
   const double q = cfg_.process_noise_radps2 * cfg_.process_noise_radps2;
   const Mat3 paa = P_.topLeftCorner<3, 3>();
   const Mat3 par = P_.topRightCorner<3, 3>();
@@ -144,7 +199,6 @@ void LosRateFilter::propagate_cov(const Vec3& u_new, double dt_s, Mat6* cov) con
   cov->topRightCorner<3, 3>() = par_q;
   cov->bottomLeftCorner<3, 3>() = par_q.transpose();
   cov->bottomRightCorner<3, 3>() = prr_new;
-  project_covariance(u_new, cov);
 }
 
 void LosRateFilter::predict_to(double t_s, Vec3* u_eci, Vec3* u_dot_eci_ps,
@@ -153,7 +207,10 @@ void LosRateFilter::predict_to(double t_s, Vec3* u_eci, Vec3* u_dot_eci_ps,
   Vec3 u;
   Vec3 ud;
   propagate_mean(u_, u_dot_, dt, &u, &ud);
-  if (cov != nullptr) propagate_cov(u, dt, cov);
+  if (cov != nullptr) {
+    propagate_cov(dt, cov);
+    project_covariance(u, cov);
+  }
   if (u_eci != nullptr) *u_eci = u;
   if (u_dot_eci_ps != nullptr) *u_dot_eci_ps = ud;
 }
@@ -172,7 +229,7 @@ void LosRateFilter::predict_rate_to(double t_s, Vec3* u_eci, Vec3* u_dot_eci_ps,
 // and the rates when the message has them. False when gated out (x, P unchanged).
 bool LosRateFilter::correct(const AnglesMeasurement& m, const Vec3& u, const Vec3& ud, Vec6* x,
                             Mat6* P) noexcept {
-  const Vec3 z = los_unit_from_angles(m.elevation_rad, m.azimuth_rad);
+  const Vec3& z = z_;
   last_dof_ = m.has_rates ? 4 : 2;
   if (!(z.dot(u) > 0.0)) {  // a measurement more than 90° off is an outlier whatever P says
     last_nis_ = INFINITY;
@@ -183,27 +240,18 @@ bool LosRateFilter::correct(const AnglesMeasurement& m, const Vec3& u, const Vec
   tangent_basis(u, &t1, &t2);
   const double sa = std::max(m.sigma_angle_rad, cfg_.angle_sigma_floor_rad);
   if (!m.has_rates) {
-    Mat26 H = Mat26::Zero();
-    H.block<1, 3>(0, 0) = t1.transpose();
-    H.block<1, 3>(1, 0) = t2.transpose();
     const Eigen::Vector2d y(t1.dot(z), t2.dot(z));
     const Eigen::Matrix2d R = sa * sa * Eigen::Matrix2d::Identity();
-    return kalman_update<2>(H, y, R, cfg_.gate_chi2_2dof, x, P, &last_nis_);
+    return kalman_update<2>(t1, t2, y, R, cfg_.gate_chi2_2dof, x, P, &last_nis_);
   }
-  const Vec3 ud_m = los_unit_rate_from_angle_rates(m.elevation_rad, m.azimuth_rad,
-                                                   m.elevation_rate_radps, m.azimuth_rate_radps);
+  const Vec3& ud_m = zd_;
   const double sr = std::max(m.sigma_rate_radps, cfg_.rate_sigma_floor_radps);
-  Mat46 H = Mat46::Zero();
-  H.block<1, 3>(0, 0) = t1.transpose();
-  H.block<1, 3>(1, 0) = t2.transpose();
-  H.block<1, 3>(2, 3) = t1.transpose();
-  H.block<1, 3>(3, 3) = t2.transpose();
   Eigen::Matrix<double, 4, 1> y;
   y << t1.dot(z), t2.dot(z), t1.dot(ud_m - ud), t2.dot(ud_m - ud);
   Eigen::Matrix4d R = Eigen::Matrix4d::Zero();
   R(0, 0) = R(1, 1) = sa * sa;
   R(2, 2) = R(3, 3) = sr * sr;
-  return kalman_update<4>(H, y, R, cfg_.gate_chi2_4dof, x, P, &last_nis_);
+  return kalman_update<4>(t1, t2, y, R, cfg_.gate_chi2_4dof, x, P, &last_nis_);
 }
 
 LosUpdateResult LosRateFilter::on_rejected(const AnglesMeasurement& m, double t_s,
@@ -226,15 +274,27 @@ LosUpdateResult LosRateFilter::on_rejected(const AnglesMeasurement& m, double t_
 }
 
 LosUpdateResult LosRateFilter::update(const AnglesMeasurement& m, double t_s) noexcept {
+  if (m.has_rates) {
+    los_unit_and_rate_from_angles(m.elevation_rad, m.azimuth_rad, m.elevation_rate_radps,
+                                  m.azimuth_rate_radps, &z_, &zd_);
+  } else {
+    z_ = los_unit_from_angles(m.elevation_rad, m.azimuth_rad);
+  }
   if (!initialized_ || t_s - t_last_update_s_ > cfg_.reinit_gap_s) {
     initialize(m, t_s);  // first measurement, or too long without an update
     return LosUpdateResult::kInitialized;
   }
   if (t_s < t_s_) return LosUpdateResult::kOutOfOrder;
+  // Prediction to t_s. The covariance is projected on the tangent plane once, after the
+  // correction, not also before it: H's rows lie in the tangent plane, so S = HPHᵀ and the
+  // tangent rows of K are the same either way; K's along-u rows only move x along u, which
+  // the normalisation of u and the projection of u̇ below remove (to first order in the
+  // innovation).
   Vec3 u;
   Vec3 ud;
   Mat6 P;
-  predict_to(t_s, &u, &ud, &P);
+  propagate_mean(u_, u_dot_, t_s - t_s_, &u, &ud);
+  propagate_cov(t_s - t_s_, &P);
   Vec6 x;
   x << u, ud;
   if (!correct(m, u, ud, &x, &P)) return on_rejected(m, t_s, ud);
@@ -259,12 +319,11 @@ double LosRateFilter::los_rate_variance(const Vec3& u_dot, const Mat3& rate_cov)
   return e.dot(rate_cov * e);
 }
 
+// J P Jᵀ with J = (I − e eᵀ)/ω_s symmetric: the projection Π_e P Π_e divided by ω_s².
 Mat3 LosRateFilter::e_theta_covariance(const Vec3& u_dot, const Mat3& rate_cov) noexcept {
   const double w = u_dot.norm();
   if (!(w > 0.0)) return Mat3::Zero();
-  const Vec3 e = u_dot / w;
-  const Mat3 J = (Mat3::Identity() - e * e.transpose()) / w;
-  return J * rate_cov * J.transpose();
+  return project_block(u_dot / w, rate_cov) / (w * w);
 }
 
 double LosRateFilter::los_rate_variance() const noexcept {

@@ -48,6 +48,10 @@ LosAngles los_angles_from_unit(const Vec3& u_eci);
 /// u̇ from elevation/azimuth and their rates: u̇ = ε̇ y_s − β̇ cos ε z_s [1/s].
 Vec3 los_unit_rate_from_angle_rates(double elevation_rad, double azimuth_rad,
                                     double elevation_rate_radps, double azimuth_rate_radps);
+/// Both of the above with one evaluation of the four trigonometric functions.
+void los_unit_and_rate_from_angles(double elevation_rad, double azimuth_rad,
+                                   double elevation_rate_radps, double azimuth_rate_radps,
+                                   Vec3* u_eci, Vec3* u_dot_eci_ps);
 
 /// Unit LOS vector and its time derivative from a relative position/velocity
 /// (r = r_target − r_sat): u = r/|r|, u̇ = (ṙ − (u·ṙ) u)/|r|. Precondition: |r| > 0.

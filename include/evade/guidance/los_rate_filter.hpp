@@ -76,6 +76,8 @@ class LosRateFilter {
   /// Normalised innovation squared of the last processed measurement.
   double last_nis() const noexcept { return last_nis_; }
   int last_dof() const noexcept { return last_dof_; }
+  /// Unit LOS of the last measurement given to update() (whatever became of it).
+  const Vec3& last_measured_u_eci() const noexcept { return z_; }
   long accepted() const noexcept { return accepted_; }
   long rejected() const noexcept { return rejected_; }
   long reinitializations() const noexcept { return reinits_; }
@@ -100,7 +102,7 @@ class LosRateFilter {
   LosUpdateResult on_rejected(const AnglesMeasurement& m, double t_s, const Vec3& ud) noexcept;
   static void propagate_mean(const Vec3& u, const Vec3& u_dot, double dt_s, Vec3* u_out,
                              Vec3* u_dot_out) noexcept;
-  void propagate_cov(const Vec3& u_new, double dt_s, Mat6* cov) const noexcept;
+  void propagate_cov(double dt_s, Mat6* cov) const noexcept;
 
   LosFilterConfig cfg_;
   bool initialized_ = false;
@@ -111,6 +113,8 @@ class LosRateFilter {
   Mat6 P_ = Mat6::Zero();
   double last_nis_ = 0.0;
   int last_dof_ = 0;
+  Vec3 z_ = Vec3::UnitX();  // unit LOS of the last measurement
+  Vec3 zd_ = Vec3::Zero();  // its rate from the measured angle rates (when it has them)
   long accepted_ = 0;
   long rejected_ = 0;
   long reinits_ = 0;
