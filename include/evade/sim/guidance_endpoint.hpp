@@ -2,8 +2,8 @@
 //
 // The simulator (sim module, pure) owns the truth, the sensor and the actuator; the guidance
 // sits behind this interface so it can run in-process (make_in_process_endpoint) or in
-// another process over LCM (apps/evade/sim_endpoints.hpp: make_lcm_endpoint, implemented in
-// apps/evade/sim_lcm_endpoint.cpp). Nothing here knows about LCM.
+// another process over LCM (the LCM implementation is evade::lcm_link::make_lcm_endpoint).
+// Nothing here knows about LCM.
 #pragma once
 
 #include <cstdint>

@@ -1,10 +1,10 @@
 // The simulator's link to evade_guidance_node over LCM (make_lcm_endpoint, declared in
-// sim_endpoints.hpp). Per guidance cycle it publishes evade_nav_state_t, the measurement
-// (evade_angles_t, if one was delivered this cycle) and then the evade_sim_clock_t tick; in
-// lockstep it waits for the node's evade_thrust_cmd_t whose utime equals the tick's and
-// returns it, so the run is deterministic and equals the in-process run bit for bit
-// (design_node.md NODE-LS-1). Commands are validated before use (NODE-IN-2): a malformed
-// command is an error, never thrust.
+// evade/lcm_link/sim_lcm_endpoint.hpp). Per guidance cycle it publishes evade_nav_state_t,
+// the measurement (evade_angles_t, if one was delivered this cycle) and then the
+// evade_sim_clock_t tick; in lockstep it waits for the node's evade_thrust_cmd_t whose utime
+// equals the tick's and returns it, so the run is deterministic and equals the in-process run
+// bit for bit (docs/GUIDANCE_NODE.md NODE-LS-1). Commands are validated before use
+// (NODE-IN-2): a malformed command is an error, never thrust.
 // Pacing: a lockstep run goes as fast as the node answers (~10^4 messages/s), which is more
 // than lcm-logger can record without losing datagrams. For a recorded HIL run, set
 // EVADE_SIM_LCM_REALTIME_FACTOR=F (> 0): tick k is then sent no earlier than k*dt/F of wall
@@ -22,13 +22,15 @@
 
 #include <lcm/lcm.h>
 
+#include "evade/lcm_link/sim_lcm_endpoint.hpp"
+
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/convert.hpp"
 #include "evade/guidance_lcm/raw_publisher.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 #include "evade/evade_sim_clock_t.hpp"
-#include "sim_endpoints.hpp"
 
+namespace evade::lcm_link {
 namespace {
 
 using namespace evade;
@@ -216,9 +218,11 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
 
 }  // namespace
 
-std::unique_ptr<evade::sim::GuidanceEndpoint> make_lcm_endpoint(const std::string& lcm_url,
-                                                                bool lockstep, double timeout_s) {
+std::unique_ptr<sim::GuidanceEndpoint> make_lcm_endpoint(const std::string& lcm_url,
+                                                         bool lockstep, double timeout_s) {
   if (!(timeout_s > 0.0))
     throw std::invalid_argument("--lcm-timeout-s must be > 0");
   return std::make_unique<LcmEndpoint>(lcm_url, lockstep, timeout_s);
 }
+
+}  // namespace evade::lcm_link
