@@ -1,0 +1,49 @@
+// publish_burn_plan (burn_plan_publisher.hpp): to_lcm, encode into a buffer, lcm_publish.
+#include "evade/lcm_link/burn_plan_publisher.hpp"
+
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "evade/evade_burn_plan_t.hpp"
+#include "evade/guidance_lcm/burn_plan_convert.hpp"
+
+namespace evade::lcm_link {
+namespace {
+
+std::int64_t wall_clock_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+}  // namespace
+
+std::int64_t publish_burn_plan(lcm_t* lcm, const std::string& channel, const BurnPlan& plan,
+                               std::int64_t seq) {
+  if (lcm == nullptr) throw std::invalid_argument("publish_burn_plan: lcm is null");
+  if (channel.empty()) throw std::invalid_argument("publish_burn_plan: channel is empty");
+  const std::int64_t utime = wall_clock_us();
+  evade_burn_plan_t m{};
+  guidance_lcm::to_lcm(plan, utime, seq, &m);
+  std::vector<std::uint8_t> buf(static_cast<std::size_t>(m.getEncodedSize()));
+  const int n = m.encode(buf.data(), 0, static_cast<int>(buf.size()));
+  if (n < 0)
+    throw std::runtime_error("LCM encode of evade_burn_plan_t for channel '" + channel +
+                             "' failed");
+  if (lcm_publish(lcm, channel.c_str(), buf.data(), static_cast<unsigned>(n)) != 0)
+    throw std::runtime_error("LCM publish on channel '" + channel + "' failed");
+  return utime;
+}
+
+std::int64_t publish_burn_plan(const std::string& lcm_url, const std::string& channel,
+                               const BurnPlan& plan, std::int64_t seq) {
+  std::unique_ptr<lcm_t, void (*)(lcm_t*)> lcm(
+      lcm_create(lcm_url.empty() ? nullptr : lcm_url.c_str()), &lcm_destroy);
+  if (lcm == nullptr)
+    throw std::runtime_error("LCM initialization failed for url '" + lcm_url + "'");
+  return publish_burn_plan(lcm.get(), channel, plan, seq);
+}
+
+}  // namespace evade::lcm_link
