@@ -2,31 +2,22 @@
 // Wang, Zhou; eq. 23 and §3). Reads the scenario (scenarios/seed4.yaml), plans with NLopt
 // ISRES (+ local polish) over the chosen objective, compares with no burn and the paper's
 // directions A and B, prints JSON, and with --publish sends the plan as evade_burn_plan_t on
-// LCM. LCM is used here only; the library evade::observability stays LCM-free.
+// LCM (evade::lcm_link::publish_burn_plan); the library evade::observability stays LCM-free.
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
-#include <lcm/lcm-cpp.hpp>
-
 #include "cli.hpp"
-#include "evade/evade_burn_plan_t.hpp"
 #include "evade/core/constants.hpp"
+#include "evade/lcm_link/burn_plan_publisher.hpp"
+#include "evade/observability/burn_plan.hpp"
 #include "evade/observability/planner.hpp"
 
 namespace evade::cli {
-namespace plan_observability {
-// Test seam: when non-null, --publish uses this LCM instance (memq:// is per instance, so an
-// in-process test must share it) instead of creating one from --lcm-url.
-lcm::LCM*& lcm_override() {
-  static lcm::LCM* p = nullptr;
-  return p;
-}
-}  // namespace plan_observability
-
 namespace {
 
 using namespace evade::observability;
@@ -167,36 +158,9 @@ int run(const Options& o) {
   j["used"] = sc.used();
 
   if (o.publish) {
-    evade::evade_burn_plan_t m{};
-    m.utime = std::chrono::duration_cast<std::chrono::microseconds>(
-                  std::chrono::system_clock::now().time_since_epoch()).count();
-    m.seq = o.seq;
-    m.burn_time_s = 0.0;  // paper 004 burns at t0
-    for (int i = 0; i < 3; ++i) {
-      m.dv_lvlh_mps[i] = res.dv_rsw_mps(i);
-      m.dv_eci_mps[i] = 0.0;
-    }
-    m.dv_eci_valid = 0;
-    m.dv_mps = p.dv_mps;
-    m.eps_rad = res.eps_rad;
-    m.theta_rad = res.theta_rad;
-    m.objective = kind == ObjectiveKind::kPaper       ? evade::evade_burn_plan_t::OBJECTIVE_PAPER
-                  : kind == ObjectiveKind::kLosChange ? evade::evade_burn_plan_t::OBJECTIVE_LOS_CHANGE
-                                                      : evade::evade_burn_plan_t::OBJECTIVE_ESTIMATION;
-    m.objective_value = res.value;
-    m.evaluations = res.evaluations;
-    m.source = evade::evade_burn_plan_t::SOURCE_OBSERVABILITY_ISRES;
-    lcm::LCM* lcm = plan_observability::lcm_override();
-    std::unique_ptr<lcm::LCM> own;
-    if (lcm == nullptr) {
-      own = std::make_unique<lcm::LCM>(o.lcm_url);
-      lcm = own.get();
-    }
-    if (!lcm->good())
-      throw std::runtime_error("LCM initialization failed for url '" + o.lcm_url + "'");
-    if (lcm->publish(o.channel, &m) != 0)
-      throw std::runtime_error("LCM publish on channel '" + o.channel + "' failed");
-    j["published"] = {{"channel", o.channel}, {"seq", o.seq}, {"utime", m.utime}};
+    const std::int64_t utime =
+        lcm_link::publish_burn_plan(o.lcm_url, o.channel, make_burn_plan(res, o.seq), o.seq);
+    j["published"] = {{"channel", o.channel}, {"seq", o.seq}, {"utime", utime}};
   }
 
   if (o.common.json) {

@@ -1,8 +1,10 @@
-// publish_burn_plan (lcm_link/burn_plan_publisher.hpp) over memq://: a plan is published,
-// received on the same LCM instance (memq:// delivers only within one instance) and decoded;
+// publish_burn_plan (lcm_link/burn_plan_publisher.hpp) over memq://: the seed4 plan of
+// `evade plan observability` is published, received on the same LCM instance (memq://
+// delivers only within one instance), decoded and checked against the planner's result;
 // plans the message cannot carry and LCM failures are clear errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -13,6 +15,9 @@
 #include "evade/evade_burn_plan_t.hpp"
 #include "evade/guidance_lcm/burn_plan_convert.hpp"
 #include "evade/lcm_link/burn_plan_publisher.hpp"
+#include "evade/observability/burn_plan.hpp"
+#include "evade/observability/planner.hpp"
+#include "seed4_problem.hpp"
 
 namespace {
 
@@ -56,6 +61,15 @@ class Memq {
   std::vector<std::vector<std::uint8_t>> frames_;
 };
 
+// `evade plan observability --seed 3` on scenarios/seed4.yaml (paper objective, ISRES with
+// population 80 and 2400 evaluations, BOBYQA polish).
+evade::observability::PlanResult plan_seed4() {
+  using namespace evade::observability;
+  IsresOptions io;
+  io.seed = 3;
+  return plan_isres(sample(test::seed4()), ObjectiveKind::kPaper, EstimationConfig{}, io);
+}
+
 BurnPlan simple_plan() {
   BurnPlan p;
   p.plan_id = 1;
@@ -63,6 +77,48 @@ BurnPlan simple_plan() {
   p.impulses[0].dv_rsw_mps = evade::Vec3(0.0, 1.0, 0.0);
   p.source = static_cast<int>(evade::PlanSource::kThreatArea);
   return p;
+}
+
+TEST(BurnPlanPublisher, Seed4PlanSurvivesPublicationOverMemq) {
+  Memq lcm;
+  ASSERT_TRUE(lcm.good());
+  const evade::observability::PlanResult res = plan_seed4();
+  const BurnPlan plan = evade::observability::make_burn_plan(res, 17);
+  const std::int64_t utime = publish_burn_plan(lcm.get(), kChannel, plan, 17);
+  const auto& frames = lcm.drain();
+  ASSERT_EQ(frames.size(), 1u);
+  evade::evade_burn_plan_t m{};
+  ASSERT_EQ(m.decode(frames[0].data(), 0, static_cast<int>(frames[0].size())),
+            static_cast<int>(frames[0].size()));
+  EXPECT_EQ(m.seq, 17);
+  EXPECT_EQ(m.utime, utime);
+  EXPECT_GT(m.utime, 1600000000LL * 1000000LL);  // a real wall-clock time in us
+  EXPECT_EQ(m.source, evade::evade_burn_plan_t::SOURCE_OBSERVABILITY_ISRES);
+  EXPECT_EQ(m.objective, evade::evade_burn_plan_t::OBJECTIVE_PAPER);
+  EXPECT_EQ(m.dv_eci_valid, 0);
+  EXPECT_DOUBLE_EQ(m.dv_mps, 3.0);
+  EXPECT_DOUBLE_EQ(m.burn_time_s, 0.0);
+  // Δv in LVLH/RSW has magnitude |Δv| and follows from (ε, θ) through C_P_RSW = diag(-1,-1,1).
+  const double mag = std::sqrt(m.dv_lvlh_mps[0] * m.dv_lvlh_mps[0] + m.dv_lvlh_mps[1] * m.dv_lvlh_mps[1] +
+                               m.dv_lvlh_mps[2] * m.dv_lvlh_mps[2]);
+  EXPECT_NEAR(mag, 3.0, 1e-12);
+  const evade::Vec3 dv = evade::observability::dv_rsw_from_angles(m.eps_rad, m.theta_rad, 3.0);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.dv_lvlh_mps[i], dv(i), 1e-12);
+  EXPECT_NEAR(m.theta_rad, -3.2453, 1e-3);  // the paper objective's optimum (objectives_test)
+  EXPECT_GT(m.objective_value, 96.0);
+  EXPECT_GT(m.evaluations, 2400);
+  // And the message carries exactly the planner's numbers.
+  EXPECT_EQ(m.eps_rad, res.eps_rad);
+  EXPECT_EQ(m.theta_rad, res.theta_rad);
+  EXPECT_EQ(m.objective_value, res.value);
+  EXPECT_EQ(m.evaluations, res.evaluations);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(m.dv_lvlh_mps[i], res.dv_rsw_mps(i));
+  BurnPlan back;
+  ASSERT_TRUE(evade::guidance_lcm::from_lcm(m, &back));
+  EXPECT_EQ(back.plan_id, 17);
+  EXPECT_EQ(back.n_impulses, 1);
+  EXPECT_EQ(back.impulses[0].dv_rsw_mps, plan.impulses[0].dv_rsw_mps);
+  EXPECT_EQ(back.observability.theta_rad, plan.observability.theta_rad);
 }
 
 TEST(BurnPlanPublisher, PlanPublishedOverMemqDecodesToTheSamePlan) {
