@@ -44,7 +44,8 @@ void require_params(const Scenario& sc, const std::string& prefix, const ParamTa
 EarthModel read_earth(const Scenario& sc, const EarthModel& defaults = kEarthDefault);
 
 /// A Markdown table of a module's parameters (key with prefix, unit, default, range,
-/// meaning), the defaults read from a default-constructed Cfg.
+/// meaning), the defaults read from a default-constructed Cfg ("(required)" where that
+/// default is outside the range: the key must be given).
 template <class Cfg>
 std::string params_markdown(const std::string& prefix, const ParamTable<Cfg>& table,
                             const Cfg& defaults = Cfg{}) {
@@ -53,6 +54,7 @@ std::string params_markdown(const std::string& prefix, const ParamTable<Cfg>& ta
     const double d = p.get(defaults);
     std::string def = param_value_text(d);
     if (p.spec.type == ParamType::kBool) def = d != 0.0 ? "true" : "false";
+    if (!param_value_ok(p.spec, d)) def = "(required)";
     md += "| `" + prefix + p.spec.key + "` | " + p.spec.unit + " | " + def + " | " +
           param_allowed_text(p.spec) + " | " + p.spec.meaning + " |\n";
   }
