@@ -25,7 +25,7 @@
 
 #include "evade/guidance/los_geometry.hpp"
 #include "evade/guidance_lcm/channels.hpp"
-#include "evade/guidance_lcm/node_core.hpp"
+#include "evade/guidance_lcm/internal/node_core.hpp"
 
 namespace {
 

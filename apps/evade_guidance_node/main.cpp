@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/config/scenario.hpp"
-#include "evade/guidance_lcm/node_core.hpp"
+#include "evade/guidance_lcm/internal/node_core.hpp"
 #include "node_loop.hpp"
 #include "node_options.hpp"
 

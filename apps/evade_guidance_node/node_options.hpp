@@ -11,7 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "evade/guidance_lcm/node_core.hpp"
+#include "evade/guidance_lcm/internal/node_core.hpp"
 
 namespace evade::node {
 

@@ -1,6 +1,6 @@
 // Guidance node cycle (docs/GUIDANCE_NODE.md). The law is paper 000's −e_θ evasion
 // (guidance_law.hpp); this file only moves data to and from it and guards the edge.
-#include "evade/guidance_lcm/node_core.hpp"
+#include "evade/guidance_lcm/internal/node_core.hpp"
 
 #include <time.h>
 

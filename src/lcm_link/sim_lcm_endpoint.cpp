@@ -26,7 +26,7 @@
 
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/convert.hpp"
-#include "evade/guidance_lcm/raw_publisher.hpp"
+#include "evade/guidance_lcm/internal/raw_publisher.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 #include "evade/evade_sim_clock_t.hpp"
 

@@ -7,9 +7,9 @@
 #include <limits>
 
 #include "evade/guidance_lcm/convert.hpp"
-#include "evade/guidance_lcm/cycle_stats.hpp"
-#include "evade/guidance_lcm/input_queue.hpp"
-#include "evade/guidance_lcm/seq_tracker.hpp"
+#include "evade/guidance_lcm/internal/cycle_stats.hpp"
+#include "evade/guidance_lcm/internal/input_queue.hpp"
+#include "evade/guidance_lcm/internal/seq_tracker.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
 namespace evade::guidance_lcm {

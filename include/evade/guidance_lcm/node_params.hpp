@@ -4,7 +4,7 @@
 #pragma once
 
 #include "evade/core/param.hpp"
-#include "evade/guidance_lcm/node_core.hpp"
+#include "evade/guidance_lcm/node_config.hpp"
 
 namespace evade::guidance_lcm {
 

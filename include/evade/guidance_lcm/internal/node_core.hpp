@@ -1,15 +1,15 @@
-// The guidance node's cycle, without its clock: subscribe, queue, validate, account, step
-// the law (paper 000 guidance, evade/guidance/guidance_law.hpp), publish one command and the
-// status. The timing loop (fixed rate on absolute deadlines, or lockstep on sim-clock ticks)
-// lives in apps/evade_guidance_node; tests drive this class directly over memq://.
-// Requirements: docs/GUIDANCE_NODE.md (NODE-IN-*, NODE-OUT-*, NODE-WD-*, NODE-RT-*).
+// Internal (not installed): the guidance node's cycle, without its clock: subscribe, queue,
+// validate, account, step the law (paper 000 guidance, evade/guidance/guidance_law.hpp),
+// publish one command and the status. The timing loop (fixed rate on absolute deadlines, or
+// lockstep on sim-clock ticks) lives in apps/evade_guidance_node; tests drive this class
+// directly over memq://. Requirements: docs/GUIDANCE_NODE.md (NODE-IN-*, NODE-OUT-*,
+// NODE-WD-*, NODE-RT-*).
 //
 // Cycle shape (STYLE.md §2): drain LCM into the bounded queue (receive callback copies raw
 // bytes only) → decode + validate + seq/utime checks, newest valid message per channel is
 // the candidate (older ones superseded) → watchdog verdict (an input of the law) → step the
-// law → encode into a
-// preallocated buffer → publish command (seq +1) → status every status_divider cycles.
-// After construction nothing allocates (operator new) or throws.
+// law → encode into a preallocated buffer → publish command (seq +1) → status every
+// status_divider cycles. After construction nothing allocates (operator new) or throws.
 #pragma once
 
 #include <array>
@@ -26,27 +26,14 @@
 #include "evade/evade_sim_clock_t.hpp"
 #include "evade/evade_thrust_cmd_t.hpp"
 #include "evade/guidance/guidance_law.hpp"
-#include "evade/guidance_lcm/cycle_stats.hpp"
+#include "evade/guidance_lcm/internal/cycle_stats.hpp"
 #include "evade/guidance_lcm/input_accounting.hpp"
-#include "evade/guidance_lcm/input_queue.hpp"
-#include "evade/guidance_lcm/raw_publisher.hpp"
-#include "evade/guidance_lcm/seq_tracker.hpp"
+#include "evade/guidance_lcm/node_config.hpp"
+#include "evade/guidance_lcm/internal/input_queue.hpp"
+#include "evade/guidance_lcm/internal/raw_publisher.hpp"
+#include "evade/guidance_lcm/internal/seq_tracker.hpp"
 
 namespace evade::guidance_lcm {
-
-/// Defaults here; unit, range and meaning in node_params.hpp. The staleness limit (edge,
-/// law and watchdog) is the law's guidance.stale_limit_s: one knob.
-struct NodeConfig {
-  guidance::GuidanceConfig guidance;  ///< the law's parameters (validated by the law)
-  double future_tolerance_s = 0.05;
-  int queue_capacity = 16;
-  int max_drain_per_cycle = 1024;
-  int status_divider = 1;
-  bool lockstep = false; ///< subscribe to the sim clock
-
-  /// Empty when valid, else the parameter tables' error text (node.*, then guidance.*).
-  std::string validate() const;
-};
 
 enum InputChannel : int { kInAngles = 0, kInNav = 1, kInArm = 2, kInCount = 3 };
 

@@ -1,0 +1,25 @@
+// The guidance node's configuration (public: a flight-software integrator sets it; the node
+// itself, GuidanceNode in internal/node_core.hpp, is plumbing and not installed).
+#pragma once
+
+#include <string>
+
+#include "evade/guidance/guidance_law.hpp"
+
+namespace evade::guidance_lcm {
+
+/// Defaults here; unit, range and meaning in node_params.hpp. The staleness limit (edge,
+/// law and watchdog) is the law's guidance.stale_limit_s: one knob.
+struct NodeConfig {
+  guidance::GuidanceConfig guidance;  ///< the law's parameters (validated by the law)
+  double future_tolerance_s = 0.05;
+  int queue_capacity = 16;
+  int max_drain_per_cycle = 1024;
+  int status_divider = 1;
+  bool lockstep = false; ///< subscribe to the sim clock
+
+  /// Empty when valid, else the parameter tables' error text (node.*, then guidance.*).
+  std::string validate() const;
+};
+
+}  // namespace evade::guidance_lcm
