@@ -8,7 +8,7 @@
 //    command of that tick). Runs only when EVADE_BENCH_UDPM_URL is set, e.g. inside
 //      unshare -rn sh -c 'ip link set lo up; ip link set lo multicast on;
 //        ip route add 224.0.0.0/4 dev lo; URL="udpm://239.255.76.67:7667?ttl=0";
-//        evade_guidance_node --lcm-url "$URL" --lockstep --quiet --stale-ms 60000 &
+//        evade_guidance_node --lcm-url "$URL" --lockstep --quiet --stale-limit-s 60 &
 //        EVADE_BENCH_UDPM_URL="$URL" node_bench --benchmark_filter=Udpm; kill %1'
 // Loop jitter (wake-up latency) and overruns at 50/200 Hz come from the node itself:
 //   evade_guidance_node --lcm-url memq:// --rate-hz 200 --max-cycles 10000 --stats-json
