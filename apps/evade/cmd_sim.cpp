@@ -1,6 +1,8 @@
 // `evade sim`: closed-loop close-range evasion simulation (paper 000, Yao & Wang 2012, sec. 4
 // and Table 2). Truth two-body + J2, sensor/actuator models and the guidance law behind a
 // GuidanceEndpoint: in-process by default, or evade_guidance_node over LCM with --lcm URL.
+// The command parses its flags, calls evade::sim (apply_sim_overrides, read_sim_config,
+// run_simulation, run_monte_carlo, write_sim_csv_row) and prints.
 //
 //   evade sim --scenario seed0 --accel 1 --detect 10 --json
 //   evade sim --scenario seed0 --noise-rad 50e-6 --no-rates --runs 200 --seed 7 --json
@@ -13,23 +15,26 @@
 #include <iomanip>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli.hpp"
 #include "evade/guidance/guidance_law.hpp"
 #include "evade/lcm_link/sim_lcm_endpoint.hpp"
 #include "evade/sim/monte_carlo.hpp"
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/sim/sim_csv.hpp"
+#include "evade/sim/sim_overrides.hpp"
 #include "evade/sim/simulator.hpp"
 
 namespace {
 
+using namespace evade;
+
 struct SimOptions {
-  evade::cli::CommonOptions common;
+  cli::CommonOptions common;
   // Numeric flags are kept as text (empty = not given) and parsed here, so that "nan" or
   // "inf" is reported with the flag's name instead of silently meaning "not given".
   std::string accel_mps2;
@@ -55,12 +60,11 @@ std::string num(double v) {
   return os.str();
 }
 
-// A flag given on the command line becomes a scenario override, so its range is checked with
-// the same rules as the file and it is echoed in "scenario_used". NaN/Inf or text that is
-// not a number: exit 2 naming the flag and the key.
-void override_flag(evade::config::Scenario& sc, const char* flag, const char* key,
-                   const std::string& text) {
-  if (text.empty()) return;
+// A flag given on the command line becomes a scenario override (sim::apply_sim_overrides), so
+// its range is checked with the same rules as the file and it is echoed in "scenario_used".
+// NaN/Inf or text that is not a number: exit 2 naming the flag and the key.
+std::optional<double> number_flag(const char* flag, const char* key, const std::string& text) {
+  if (text.empty()) return std::nullopt;
   double v = NAN;
   std::size_t used = 0;
   try {
@@ -72,76 +76,23 @@ void override_flag(evade::config::Scenario& sc, const char* flag, const char* ke
     throw std::invalid_argument(std::string(flag) + " = '" + text + "' (scenario key " + key +
                                 "): must be a finite number");
   }
-  sc.apply_override(std::string(key) + "=" + num(v));
+  return v;
 }
 
-const char* kCsvHeader =
-    "t_s,sat_x_m,sat_y_m,sat_z_m,sat_vx_mps,sat_vy_mps,sat_vz_mps,deb_x_m,deb_y_m,deb_z_m,"
-    "rel_x_m,rel_y_m,rel_z_m,range_m,range_rate_mps,los_rate_true_radps,zem_true_m,"
-    "e_theta_true_x,e_theta_true_y,e_theta_true_z,has_meas,meas_el_rad,meas_az_rad,"
-    "los_rate_est_radps,los_rate_est_sd_radps,e_theta_est_x,e_theta_est_y,e_theta_est_z,"
-    "mode,reason,cmd_accel_mps2,cmd_dir_x,cmd_dir_y,cmd_dir_z,accel_x_mps2,accel_y_mps2,"
-    "accel_z_mps2,dv_used_mps,fallback";
-
-void write_csv_row(std::ostream& os, const evade::sim::SimSample& s) {
-  const evade::Vec3 rel = s.debris.r_eci_m - s.satellite.r_eci_m;
-  const double zem = (s.range_rate_mps < 0.0)
-                         ? s.range_m * s.range_m * s.los_rate_true_radps / -s.range_rate_mps
-                         : NAN;
-  os << std::setprecision(15) << s.t_s;
-  for (int i = 0; i < 3; ++i) os << ',' << s.satellite.r_eci_m[i];
-  for (int i = 0; i < 3; ++i) os << ',' << s.satellite.v_eci_mps[i];
-  for (int i = 0; i < 3; ++i) os << ',' << s.debris.r_eci_m[i];
-  for (int i = 0; i < 3; ++i) os << ',' << rel[i];
-  os << ',' << s.range_m << ',' << s.range_rate_mps << ',' << s.los_rate_true_radps << ','
-     << zem;
-  for (int i = 0; i < 3; ++i) os << ',' << s.e_theta_true_eci[i];
-  os << ',' << (s.has_measurement ? 1 : 0) << ',' << s.meas.elevation_rad << ','
-     << s.meas.azimuth_rad;
-  os << ',' << s.status.los_rate_radps << ',' << std::sqrt(std::max(s.status.los_rate_var_rad2ps2, 0.0));
-  for (int i = 0; i < 3; ++i) os << ',' << s.status.e_theta_eci[i];
-  os << ',' << evade::guidance::mode_name(s.cmd.mode) << ','
-     << evade::guidance::reason_name(s.cmd.reason) << ',' << s.cmd.accel_mps2;
-  for (int i = 0; i < 3; ++i) os << ',' << s.cmd.u_eci[i];
-  for (int i = 0; i < 3; ++i) os << ',' << s.accel_applied_eci_mps2[i];
-  os << ',' << s.status.dv_used_mps << ',' << (s.status.fallback_direction ? 1 : 0) << '\n';
+sim::SimOverrides parse_overrides(const SimOptions& o) {
+  sim::SimOverrides ov;
+  ov.max_accel_mps2 = number_flag("--accel", "guidance.max_accel_mps2", o.accel_mps2);
+  ov.detect_before_tca_s = number_flag("--detect", "encounter.detect_before_tca_s", o.detect_s);
+  ov.noise_rad = number_flag("--noise-rad", "sensor.noise_rad", o.noise_rad);
+  ov.sensor_rate_hz = number_flag("--rate-hz", "sensor.rate_hz", o.rate_hz);
+  ov.guidance_rate_hz = number_flag("--guidance-hz", "guidance.rate_hz", o.guidance_hz);
+  ov.rate_noise_radps =
+      number_flag("--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps);
+  ov.no_rates = o.no_rates;
+  return ov;
 }
 
-std::string script_path(const char* name) {
-  // $EVADE_SCRIPT_DIR, then <scenario dir>/../scripts for every scenario search dir (source
-  // tree: scenarios/ -> scripts/; install tree: share/evade/scenarios -> share/evade/scripts).
-  std::vector<std::string> dirs;
-  if (const char* env = std::getenv("EVADE_SCRIPT_DIR")) dirs.emplace_back(env);
-  for (const std::string& d : evade::config::scenario_search_dirs()) dirs.push_back(d + "/../scripts");
-  for (const std::string& dir : dirs) {
-    const std::string p = dir + "/" + name;
-    if (std::ifstream(p).good()) return p;
-  }
-  throw std::runtime_error(std::string("scripts/") + name + " not found");
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') q += "'\\''";
-    else q += c;
-  }
-  return q + "'";
-}
-
-int run_sim(const SimOptions& o) {
-  using namespace evade;
-  config::Scenario sc = cli::load_scenario(o.common);
-  override_flag(sc, "--accel", "guidance.max_accel_mps2", o.accel_mps2);
-  override_flag(sc, "--detect", "encounter.detect_before_tca_s", o.detect_s);
-  override_flag(sc, "--noise-rad", "sensor.noise_rad", o.noise_rad);
-  override_flag(sc, "--rate-hz", "sensor.rate_hz", o.rate_hz);
-  override_flag(sc, "--guidance-hz", "guidance.rate_hz", o.guidance_hz);
-  override_flag(sc, "--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps);
-  // --noise-rad switches to an angles-only sensor (the filter estimates the rates), unless
-  // --rate-noise-radps also models a noisy rate-stabilised tracker.
-  if (o.no_rates || (!o.noise_rad.empty() && o.rate_noise_radps.empty()))
-    sc.apply_override("sensor.has_rates=false");
+void check_run_options(const SimOptions& o) {
   if (o.runs < 0 || o.runs > 1000000) {
     throw std::invalid_argument("--runs = " + std::to_string(o.runs) + " outside [0, 1000000]");
   }
@@ -156,32 +107,34 @@ int run_sim(const SimOptions& o) {
   if (!o.plot.empty() && o.csv.empty()) {
     throw std::invalid_argument("--plot needs --csv FILE (the plot is drawn from the CSV)");
   }
-  sim::SimConfig cfg = sim::sim_config_from_scenario(sc);
-  sc.check_all_used();
-  cfg.validate();
+}
 
-  std::unique_ptr<sim::GuidanceEndpoint> endpoint;
+std::unique_ptr<sim::GuidanceEndpoint> make_endpoint(const SimOptions& o,
+                                                     const sim::SimConfig& cfg) {
   if (!o.lcm_url.empty()) {
-    endpoint = lcm_link::make_lcm_endpoint(o.lcm_url, o.lockstep, o.lcm_timeout_s);
-  } else {
-    endpoint = sim::make_in_process_endpoint(cfg.guidance, cfg.guidance.armed);
+    return lcm_link::make_lcm_endpoint(o.lcm_url, o.lockstep, o.lcm_timeout_s);
   }
+  return sim::make_in_process_endpoint(cfg.guidance, cfg.guidance.armed);
+}
 
+// One run, its time history written to --csv when given.
+sim::SimResult simulate(const SimOptions& o, const sim::SimConfig& cfg,
+                        sim::GuidanceEndpoint& endpoint) {
   std::ofstream csv;
   if (!o.csv.empty()) {
     csv.open(o.csv);
     if (!csv) throw std::invalid_argument("--csv = " + o.csv + ": cannot open for writing");
-    csv << kCsvHeader << '\n';
+    csv << sim::sim_csv_header() << '\n';
   }
   sim::SampleCallback cb;
-  if (csv.is_open()) cb = [&csv](const sim::SimSample& s) { write_csv_row(csv, s); };
-  const sim::SimResult r = sim::run_simulation(cfg, *endpoint, cb);
+  if (csv.is_open()) cb = [&csv](const sim::SimSample& s) { sim::write_sim_csv_row(csv, s); };
+  const sim::SimResult r = sim::run_simulation(cfg, endpoint, cb);
   if (csv.is_open()) csv.close();
-  if (!r.closest_approach_found) {
-    std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.encounter.max_duration_s);
-    return 1;
-  }
+  return r;
+}
 
+nlohmann::json result_json(const SimOptions& o, const sim::SimResult& r,
+                           const sim::SimConfig& cfg, const config::Scenario& sc) {
   nlohmann::json j;
   j["miss_m"] = r.miss_m;
   j["tca_s"] = r.tca_s;
@@ -212,51 +165,98 @@ int run_sim(const SimOptions& o) {
                      {"gravity", cfg.gravity == GravityModel::kTwoBody ? "two_body"
                                                                       : "two_body_j2"},
                      {"scenario", sc.source()}};
+  return j;
+}
 
-  if (o.runs > 0) {
-    if (!o.lcm_url.empty()) throw std::invalid_argument("--runs cannot be combined with --lcm");
-    std::mutex mu;
-    auto progress = [&mu](int done, int total) {
-      std::lock_guard<std::mutex> lock(mu);
-      if (done == total || done % std::max(1, total / 20) == 0) {
-        std::fprintf(stderr, "evade sim: monte carlo %d/%d\n", done, total);
-      }
-    };
-    const sim::MonteCarloResult mc = sim::run_monte_carlo(
-        cfg, o.runs, static_cast<std::uint64_t>(o.seed), o.threads, progress);
-    j["runs"] = o.runs;
-    j["seed"] = o.seed;
-    j["miss_m_min"] = mc.miss_min_m;
-    j["miss_m_p5"] = mc.miss_p5_m;
-    j["miss_m_p50"] = mc.miss_p50_m;
-    j["miss_m_p95"] = mc.miss_p95_m;
-    j["miss_m_max"] = mc.miss_max_m;
-    j["miss_m_mean"] = mc.miss_mean_m;
-  }
-  j["scenario_used"] = sc.used();
-
-  if (!o.plot.empty()) {
-    const std::string cmd = "/usr/bin/python3 " + shell_quote(script_path("plot_sim.py")) + " " +
-                            shell_quote(o.csv) + " " + shell_quote(o.plot) + " 1>&2";
-    const int rc = std::system(cmd.c_str());
-    if (rc != 0) {
-      std::fprintf(stderr, "evade sim: plot failed (%s)\n", cmd.c_str());
-      return 1;
+// --runs: the Monte Carlo over noise seeds (in-process guidance), progress on stderr.
+void add_monte_carlo(const SimOptions& o, const sim::SimConfig& cfg, nlohmann::json* j) {
+  if (!o.lcm_url.empty()) throw std::invalid_argument("--runs cannot be combined with --lcm");
+  std::mutex mu;
+  auto progress = [&mu](int done, int total) {
+    std::lock_guard<std::mutex> lock(mu);
+    if (done == total || done % std::max(1, total / 20) == 0) {
+      std::fprintf(stderr, "evade sim: monte carlo %d/%d\n", done, total);
     }
+  };
+  const sim::MonteCarloResult mc = sim::run_monte_carlo(
+      cfg, o.runs, static_cast<std::uint64_t>(o.seed), o.threads, progress);
+  (*j)["runs"] = o.runs;
+  (*j)["seed"] = o.seed;
+  (*j)["miss_m_min"] = mc.miss_min_m;
+  (*j)["miss_m_p5"] = mc.miss_p5_m;
+  (*j)["miss_m_p50"] = mc.miss_p50_m;
+  (*j)["miss_m_p95"] = mc.miss_p95_m;
+  (*j)["miss_m_max"] = mc.miss_max_m;
+  (*j)["miss_m_mean"] = mc.miss_mean_m;
+}
+
+std::string script_path(const char* name) {
+  // $EVADE_SCRIPT_DIR, then <scenario dir>/../scripts for every scenario search dir (source
+  // tree: scenarios/ -> scripts/; install tree: share/evade/scenarios -> share/evade/scripts).
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("EVADE_SCRIPT_DIR")) dirs.emplace_back(env);
+  for (const std::string& d : config::scenario_search_dirs()) dirs.push_back(d + "/../scripts");
+  for (const std::string& dir : dirs) {
+    const std::string p = dir + "/" + name;
+    if (std::ifstream(p).good()) return p;
   }
+  throw std::runtime_error(std::string("scripts/") + name + " not found");
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'') q += "'\\''";
+    else q += c;
+  }
+  return q + "'";
+}
+
+// --plot: scripts/plot_sim.py draws the CSV. Returns false (message on stderr) on failure.
+bool draw_plot(const SimOptions& o) {
+  const std::string cmd = "/usr/bin/python3 " + shell_quote(script_path("plot_sim.py")) + " " +
+                          shell_quote(o.csv) + " " + shell_quote(o.plot) + " 1>&2";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0) {
+    std::fprintf(stderr, "evade sim: plot failed (%s)\n", cmd.c_str());
+    return false;
+  }
+  return true;
+}
+
+void print_text(const SimOptions& o, const sim::SimResult& r, const nlohmann::json& j) {
+  std::printf("miss %.4f m at tca %.6f s (nominal miss %.4f m); dv %.4f m/s, burn %.3f s, "
+              "%ld cycles\n",
+              r.miss_m, r.tca_s, r.nominal_miss_m, r.dv_mps, r.burn_s, r.cycles);
+  if (o.runs > 0) {
+    std::printf("monte carlo %d runs: miss p5 %.4f p50 %.4f p95 %.4f (min %.4f max %.4f) m\n",
+                o.runs, j["miss_m_p5"].get<double>(), j["miss_m_p50"].get<double>(),
+                j["miss_m_p95"].get<double>(), j["miss_m_min"].get<double>(),
+                j["miss_m_max"].get<double>());
+  }
+}
+
+int run_sim(const SimOptions& o) {
+  config::Scenario sc = cli::load_scenario(o.common);
+  sim::apply_sim_overrides(parse_overrides(o), &sc);
+  check_run_options(o);
+  const sim::SimConfig cfg = sim::read_sim_config(sc);
+
+  const std::unique_ptr<sim::GuidanceEndpoint> endpoint = make_endpoint(o, cfg);
+  const sim::SimResult r = simulate(o, cfg, *endpoint);
+  if (!r.closest_approach_found) {
+    std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.encounter.max_duration_s);
+    return 1;
+  }
+  nlohmann::json j = result_json(o, r, cfg, sc);
+  if (o.runs > 0) add_monte_carlo(o, cfg, &j);
+  j["scenario_used"] = sc.used();
+  if (!o.plot.empty() && !draw_plot(o)) return 1;
 
   if (o.common.json) {
     cli::print_json(j);
   } else {
-    std::printf("miss %.4f m at tca %.6f s (nominal miss %.4f m); dv %.4f m/s, burn %.3f s, "
-                "%ld cycles\n",
-                r.miss_m, r.tca_s, r.nominal_miss_m, r.dv_mps, r.burn_s, r.cycles);
-    if (o.runs > 0) {
-      std::printf("monte carlo %d runs: miss p5 %.4f p50 %.4f p95 %.4f (min %.4f max %.4f) m\n",
-                  o.runs, j["miss_m_p5"].get<double>(), j["miss_m_p50"].get<double>(),
-                  j["miss_m_p95"].get<double>(), j["miss_m_min"].get<double>(),
-                  j["miss_m_max"].get<double>());
-    }
+    print_text(o, r, j);
   }
   return 0;
 }
