@@ -41,6 +41,8 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
       stale_us_(static_cast<std::int64_t>(std::llround(cfg.guidance.stale_limit_s * 1e6))),
       future_us_(static_cast<std::int64_t>(std::llround(cfg.future_tolerance_s * 1e6))),
       queue_(static_cast<std::size_t>(cfg.queue_capacity)),
+      seq_{SeqTracker(cfg.max_seq_jump), SeqTracker(cfg.max_seq_jump),
+           SeqTracker(cfg.max_seq_jump)},
       armed_(cfg.guidance.armed),
       cmd_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmd),
       status_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanStatus) {
@@ -78,8 +80,12 @@ void GuidanceNode::on_input(const lcm_recv_buf_t* rbuf, const char*, void* user)
     self->counts_.add(Verdict::kRejected, Reason::kOversize);
     return;
   }
-  if (!self->queue_.push(ctx->channel, rbuf->data, rbuf->data_size)) {
+  int dropped_channel = -1;
+  if (!self->queue_.push(ctx->channel, rbuf->data, rbuf->data_size, &dropped_channel)) {
     self->counts_.add(Verdict::kDropped);  // the oldest queued message made room
+    if (dropped_channel >= 0 && dropped_channel < kInCount) {
+      ++self->dropped_since_accept_[static_cast<std::size_t>(dropped_channel)];
+    }
   }
 }
 
@@ -92,7 +98,7 @@ void GuidanceNode::on_clock(const lcm_recv_buf_t* rbuf, const char*, void* user)
     return;  // not a tick; the simulator will time out and say so
   }
   std::int64_t gaps = 0;
-  if (self->tick_seq_.check(tick.seq, &gaps) != Reason::kOk) return;  // replayed tick
+  if (self->tick_seq_.check(tick.seq, tick.utime, &gaps) != Reason::kOk) return;  // replayed
   ++self->ticks_received_;
   if (self->tick_pending_) ++self->ticks_missed_;  // previous tick never got its cycle
   self->tick_pending_ = true;
@@ -144,12 +150,18 @@ bool GuidanceNode::admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) n
     return false;
   }
   std::int64_t gaps = 0;
-  const Reason s = seq_[raw.channel].check(msg->seq, &gaps);
+  SeqTracker& tracker = seq_[static_cast<std::size_t>(raw.channel)];
+  const std::int64_t restarts = tracker.restarts();
+  const Reason s = tracker.check(msg->seq, msg->utime, &gaps);
   if (s != Reason::kOk) {
-    counts_.add(Verdict::kStale, s);
+    counts_.add(s == Reason::kSeqJump ? Verdict::kRejected : Verdict::kStale, s);
     return false;
   }
-  counts_.seq_gaps += gaps;
+  // Gaps are numbers never received: the ones this node dropped from its own queue were.
+  std::int64_t& dropped = dropped_since_accept_[static_cast<std::size_t>(raw.channel)];
+  counts_.seq_gaps += gaps > dropped ? gaps - dropped : 0;
+  dropped = 0;
+  counts_.seq_restarts += tracker.restarts() - restarts;
   return true;
 }
 

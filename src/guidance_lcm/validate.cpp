@@ -76,6 +76,7 @@ const char* reason_name(Reason r) noexcept {
     case Reason::kStaleUtime: return "stale_utime";
     case Reason::kDuplicateSeq: return "duplicate_seq";
     case Reason::kOutOfOrderSeq: return "out_of_order_seq";
+    case Reason::kSeqJump: return "seq_jump";
     case Reason::kCount: break;
   }
   return "?";

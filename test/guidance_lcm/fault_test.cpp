@@ -318,5 +318,88 @@ TEST(NodeFaults, OnlyBadDataNeverThrusts) {
   expect_accounted(rig.node, rig.pub.published());
 }
 
+// NODE-IN-4 (issue: one well-formed message with seq + 10^12 used to be accepted, and every
+// genuine message after it was out of order: the node sat in SAFE). The spoof is rejected
+// and the commands equal those of a node that never saw it.
+TEST(NodeFaults, OneSpoofedSeqJumpCannotLockOutTheSensor) {
+  run_against_reference(
+      150,
+      [&](Rig& r, int k, std::int64_t t) -> std::int64_t {
+        if (k != 10) return 0;
+        evade_angles_t a{};
+        r.enc.angles_at(t, &a);
+        a.elevation_rad += 0.05;               // wrong data: must not be used
+        a.seq = k + 1 + 1000000000000LL;       // seq + 10^12
+        r.pub.send(kChanAngles, a);
+        return 1;
+      },
+      Verdict::kRejected, 1);
+}
+
+// NODE-IN-4: a genuine sender restart (seq back to 1, time going on) is followed after one
+// message per channel; the node keeps evading.
+TEST(NodeFaults, GenuineSenderRestartIsFollowed) {
+  Rig rig;
+  std::int64_t t = 1000000;
+  for (int k = 0; k < 40; ++k, t += kPeriodUs) rig.good_cycle(t, 1000 + k);
+  for (int k = 0; k < 40; ++k, t += kPeriodUs) {
+    const evade_thrust_cmd_t& c = rig.good_cycle(t, 1 + k);  // the sender restarted
+    if (k >= 2) {
+      EXPECT_NE(c.mode, evade_thrust_cmd_t::MODE_SAFE) << "cycle " << k << " after the restart";
+    }
+  }
+  EXPECT_EQ(rig.node.counts().seq_restarts, 2);  // angles and nav
+  EXPECT_EQ(rig.node.counts().by_reason[static_cast<int>(Reason::kOutOfOrderSeq)], 2);
+  EXPECT_EQ(rig.node.counts().seq_gaps, 0);
+  expect_accounted(rig.node, rig.pub.published());
+}
+
+// seq_gaps means numbers never received: messages the node dropped from its own full queue
+// were received and counted as dropped, not as gaps.
+TEST(NodeFaults, QueueDropsAreNotCountedAsSeqGaps) {
+  NodeConfig cfg;
+  cfg.queue_capacity = 4;
+  Rig rig(cfg);
+  std::int64_t t = 1000000;
+  rig.good_cycle(t, 1);
+  t += kPeriodUs;
+  evade_nav_state_t nav{};
+  rig.enc.nav_at(t, &nav);
+  nav.seq = 2;
+  for (std::int64_t s = 2; s <= 11; ++s) {  // a burst of ten angles messages
+    evade_angles_t a{};
+    rig.enc.angles_at(t, &a);
+    a.seq = s;
+    rig.pub.send(kChanAngles, a);
+  }
+  rig.pub.send(kChanNav, nav);
+  rig.cycle(t);
+  const InputCounts& c = rig.node.counts();
+  EXPECT_EQ(c.dropped, 7);     // angles 2..8 made room for 9, 10, 11 and the nav message
+  EXPECT_EQ(c.superseded, 2);  // angles 9 and 10 (11 is used)
+  EXPECT_EQ(c.seq_gaps, 0);
+  expect_accounted(rig.node, rig.pub.published());
+}
+
+// NODE-IN-2: NaN or Inf in a field the flags mark unused rejects the whole message (its
+// angles used to drive thrust); the commands equal those of a node that never saw it.
+TEST(NodeFaults, NaNInUnusedFieldsRejectsTheWholeMessage) {
+  run_against_reference(
+      120,
+      [&](Rig& r, int k, std::int64_t t) -> std::int64_t {
+        if (k % 4 != 1) return 0;
+        evade_angles_t a{};
+        r.enc.angles_at(t, &a);
+        a.elevation_rad += 0.05;  // wrong data: must not be used
+        a.seq = k + 2;            // newer than this cycle's good message
+        a.has_rates = false;
+        a.has_range = false;
+        if ((k / 4) % 2 == 0) a.elevation_rate_radps = kNaN; else a.range_m = kInf;
+        r.pub.send(kChanAngles, a);
+        return 1;
+      },
+      Verdict::kRejected, 30);
+}
+
 }  // namespace
 }  // namespace evade::guidance_lcm::test

@@ -27,6 +27,7 @@ enum class Reason : std::uint8_t {
   kStaleUtime,        ///< utime older than now - stale limit
   kDuplicateSeq,      ///< seq equal to the last accepted seq on this channel
   kOutOfOrderSeq,     ///< seq lower than the last accepted seq on this channel
+  kSeqJump,           ///< seq implausibly far ahead (more than node.max_seq_jump), unconfirmed
   kCount
 };
 
@@ -39,7 +40,10 @@ struct InputCounts {
   std::int64_t stale = 0;
   std::int64_t superseded = 0;
   std::int64_t dropped = 0;
-  std::int64_t seq_gaps = 0;  ///< messages missing between two accepted seqs (lost upstream)
+  /// Sequence numbers never received by the node: skipped between two accepted seqs of a
+  /// channel, less the messages of that channel the node itself dropped from its queue.
+  std::int64_t seq_gaps = 0;
+  std::int64_t seq_restarts = 0;  ///< sender restarts confirmed (NODE-IN-4)
   std::int64_t by_reason[static_cast<int>(Reason::kCount)] = {};
 
   std::int64_t accounted() const noexcept {

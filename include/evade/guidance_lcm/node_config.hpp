@@ -16,6 +16,7 @@ struct NodeConfig {
   int queue_capacity = 16;
   int max_drain_per_cycle = 1024;
   int status_divider = 1;
+  int max_seq_jump = 1000;
   bool lockstep = false; ///< subscribe to the sim clock
 
   /// Empty when valid, else the parameter tables' error text (node.*, then guidance.*).

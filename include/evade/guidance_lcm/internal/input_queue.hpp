@@ -30,10 +30,13 @@ class InputQueue {
   bool empty() const noexcept { return size_ == 0; }
 
   /// Copies a message in. Returns false if the oldest entry had to be discarded to make
-  /// room (the caller counts it as dropped). size must be <= kMaxInputBytes.
-  bool push(int channel, const void* bytes, std::uint32_t size) noexcept {
+  /// room (the caller counts it as dropped; *dropped_channel, when given, receives its
+  /// channel). size must be <= kMaxInputBytes.
+  bool push(int channel, const void* bytes, std::uint32_t size,
+            int* dropped_channel = nullptr) noexcept {
     bool kept_all = true;
     if (size_ == slots_.size()) {  // drop oldest
+      if (dropped_channel != nullptr) *dropped_channel = slots_[head_].channel;
       head_ = (head_ + 1) % slots_.size();
       --size_;
       kept_all = false;

@@ -94,7 +94,8 @@ class GuidanceNode {
   std::array<SubContext, kInCount> ctx_{};
   std::array<lcm_subscription_t*, kInCount> subs_{};
   lcm_subscription_t* clock_sub_ = nullptr;
-  std::array<SeqTracker, kInCount> seq_{};
+  std::array<SeqTracker, kInCount> seq_;
+  std::array<std::int64_t, kInCount> dropped_since_accept_{};  // per channel, queue drops
   InputCounts counts_;
   CycleStats compute_;
   CycleStats wakeup_;
@@ -117,7 +118,7 @@ class GuidanceNode {
   std::int64_t tick_utime_ = 0;
   std::int64_t ticks_received_ = 0;
   std::int64_t ticks_missed_ = 0;
-  SeqTracker tick_seq_;
+  SeqTracker tick_seq_{1000};
 
   // Outputs, preallocated.
   std::int64_t cmd_seq_ = 0;
