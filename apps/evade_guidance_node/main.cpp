@@ -137,6 +137,7 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
   lim.max_cycles = opts.max_cycles;
   lim.idle_exit_s = opts.idle_exit_s;
   lim.progress = !opts.quiet;
+  lim.input_is_log = opts.lcm_url.rfind("file://", 0) == 0;
   const node::LoopResult res =
       opts.lockstep ? node::run_lockstep(nodecore, lim, &g_stop)
                     : node::run_fixed_rate(nodecore, cfg.guidance.rate_hz, lim, &g_stop);

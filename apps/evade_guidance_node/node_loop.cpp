@@ -83,9 +83,9 @@ LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, cons
     node.record_wakeup_latency(late_us);
     if (res.wakeup_us.size() < res.wakeup_us.capacity()) res.wakeup_us.push_back(late_us);
 
-    if (node.drain() < 0) {
-      res.exit_code = 1;
-      res.why = "LCM receive error";
+    if (node.drain() < 0) {  // a file:// log ends this way: a clean stop, not a failure
+      res.exit_code = lim.input_is_log ? 0 : 1;
+      res.why = lim.input_is_log ? "end of LCM input" : "LCM receive error";
       break;
     }
     node.run_cycle(now_ns(CLOCK_REALTIME) / 1000);

@@ -18,6 +18,7 @@ struct LoopLimits {
   std::int64_t max_cycles = 0;    ///< 0 = until stop is set
   double idle_exit_s = 0.0;       ///< lockstep only: 0 = never
   bool progress = true;           ///< one line on stderr every ~10 s
+  bool input_is_log = false;      ///< the input URL is a file:// log: its end exits 0
 };
 
 struct LoopResult {

@@ -22,6 +22,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <nlohmann/json.hpp>
 
+#include "evade/evade_arm_t.hpp"
 #include "evade/evade_thrust_cmd_t.hpp"
 #include "evade/guidance_lcm/channels.hpp"
 
@@ -204,6 +205,33 @@ TEST(NodeCli, BadFlagsExitTwoNamingTheFlag) {
   ASSERT_TRUE(WIFEXITED(rc2));
   EXPECT_EQ(WEXITSTATUS(rc2), 2);
   EXPECT_NE(slurp(dir + "/err2.txt").find("(0, 100]"), std::string::npos);
+  run("rm -rf '" + dir + "'");
+}
+
+// The end of a file:// log is the end of input in the fixed-rate mode too: exit 0 (it
+// used to exit 1 with "LCM receive error") after consuming the log's messages.
+TEST(NodeCli, EndOfLogExitsCleanlyInFixedRateMode) {
+  const std::string dir = make_temp_dir();
+  ASSERT_FALSE(dir.empty());
+  {
+    lcm::LCM log("file://" + dir + "/in.lcmlog?mode=w");
+    ASSERT_TRUE(log.good());
+    for (int k = 1; k <= 20; ++k) {
+      evade::evade_arm_t arm{};
+      arm.utime = 1000 * k;
+      arm.seq = k;
+      arm.armed = true;
+      ASSERT_EQ(log.publish(evade::guidance_lcm::kChanArm, &arm), 0);
+    }
+  }
+  const int rc = run(std::string("'") + EVADE_NODE_PATH + "' --lcm-url 'file://" + dir +
+                     "/in.lcmlog?speed=0' --rate-hz 100 --stats-json > '" + dir +
+                     "/out.json' 2> '" + dir + "/err.txt'");
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 0) << slurp(dir + "/err.txt");
+  const nlohmann::json j = read_json(dir + "/out.json");
+  EXPECT_EQ(j["exit_reason"], "end of LCM input");
+  EXPECT_EQ(j["inputs"]["received"].get<long>(), 20);
   run("rm -rf '" + dir + "'");
 }
 
