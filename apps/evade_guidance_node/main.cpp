@@ -6,6 +6,7 @@
 // 2 bad input (flags or config, with the key, value and allowed range).
 #include <algorithm>
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -17,6 +18,7 @@
 
 #include "evade/config/scenario.hpp"
 #include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/lcm_url.hpp"
 #include "node_loop.hpp"
 #include "node_options.hpp"
 
@@ -44,6 +46,24 @@ LcmPtr open_lcm(const std::string& url) {
   LcmPtr l(lcm_create(url.empty() ? nullptr : url.c_str()));
   if (!l) throw std::runtime_error("cannot open LCM provider '" + url + "'");
   return l;
+}
+
+// The kernel caps SO_RCVBUF at net.core.rmem_max: say so when that is below the request, so
+// that an operator knows bursts may be dropped before the node can count them (NODE-IN-6).
+void warn_if_receive_buffer_capped(const std::string& url, int requested_bytes) {
+  if (url.rfind("udpm://", 0) != 0) return;
+  std::FILE* f = std::fopen("/proc/sys/net/core/rmem_max", "r");
+  if (f == nullptr) return;
+  long rmem_max = 0;
+  const int n = std::fscanf(f, "%ld", &rmem_max);
+  std::fclose(f);
+  if (n == 1 && rmem_max < requested_bytes) {
+    std::fprintf(stderr, "evade_guidance_node: warning: the kernel caps the UDP receive buffer "
+                 "at %ld B (net.core.rmem_max) below the %d B requested (node.recv_buf_bytes); "
+                 "a burst larger than it may be dropped by the kernel, uncounted. Raise it with "
+                 "`sysctl -w net.core.rmem_max=%d`.\n", rmem_max, requested_bytes,
+                 requested_bytes);
+  }
 }
 
 void print_banner(const evade::node::NodeOptions& o, const evade::guidance_lcm::NodeConfig& c) {
@@ -126,7 +146,10 @@ void install_signal_handlers() {
 // Opens LCM, runs the loop until it stops, reports. Returns the exit code.
 int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::NodeConfig& cfg) {
   using namespace evade;
-  LcmPtr in = open_lcm(opts.lcm_url);
+  const std::string in_url = guidance_lcm::lcm_url_with_recv_buf(
+      opts.lcm_url, std::getenv("LCM_DEFAULT_URL"), static_cast<std::size_t>(cfg.recv_buf_bytes));
+  warn_if_receive_buffer_capped(in_url, cfg.recv_buf_bytes);
+  LcmPtr in = open_lcm(in_url);
   LcmPtr out;
   if (!opts.out_lcm_url.empty()) out = open_lcm(opts.out_lcm_url);
   guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get());

@@ -14,6 +14,8 @@ const Param<C> kRows[] = {
     EVADE_PARAM_INT(C, max_drain_per_cycle, "-", 1, 1000000,
                     "LCM messages handled per drain (bounds one cycle's input work)"),
     EVADE_PARAM_INT(C, status_divider, "-", 1, 10000, "publish the status every N cycles"),
+    EVADE_PARAM_INT(C, recv_buf_bytes, "B", 65536, 1073741824,
+                    "kernel UDP receive buffer requested for a udpm:// input (NODE-IN-6)"),
     EVADE_PARAM_INT(C, max_seq_jump, "-", 1, 1000000,
                     "largest plausible forward seq step; beyond it a sender restart must be "
                     "confirmed by the next message (NODE-IN-4)"),

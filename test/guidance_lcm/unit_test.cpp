@@ -10,6 +10,7 @@
 #include "evade/guidance_lcm/internal/cycle_stats.hpp"
 #include "evade/guidance_lcm/internal/input_queue.hpp"
 #include "evade/guidance_lcm/internal/seq_tracker.hpp"
+#include "evade/guidance_lcm/lcm_url.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
 namespace evade::guidance_lcm {
@@ -239,4 +240,16 @@ TEST(CycleStats, QuantilesOverTheWindowAndMaxSinceStart) {
 }
 
 }  // namespace
+// NODE-IN-6: a udpm:// input gets the node's receive buffer unless the URL sets one.
+TEST(LcmUrl, UdpmGetsTheReceiveBufferOthersUnchanged) {
+  EXPECT_EQ(lcm_url_with_recv_buf("", nullptr, 8388608),
+            "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=8388608");
+  EXPECT_EQ(lcm_url_with_recv_buf("", "udpm://239.1.2.3:7000", 1024),
+            "udpm://239.1.2.3:7000?recv_buf_size=1024");
+  EXPECT_EQ(lcm_url_with_recv_buf("udpm://239.1.2.3:7000?recv_buf_size=5", nullptr, 1024),
+            "udpm://239.1.2.3:7000?recv_buf_size=5");
+  EXPECT_EQ(lcm_url_with_recv_buf("memq://", nullptr, 1024), "memq://");
+  EXPECT_EQ(lcm_url_with_recv_buf("file:///x.log?speed=0", nullptr, 1024), "file:///x.log?speed=0");
+}
+
 }  // namespace evade::guidance_lcm

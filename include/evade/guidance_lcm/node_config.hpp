@@ -17,6 +17,7 @@ struct NodeConfig {
   int max_drain_per_cycle = 1024;
   int status_divider = 1;
   int max_seq_jump = 1000;
+  int recv_buf_bytes = 8 * 1024 * 1024;  ///< udpm kernel receive buffer requested (NODE-IN-6)
   bool lockstep = false; ///< subscribe to the sim clock
 
   /// Empty when valid, else the parameter tables' error text (node.*, then guidance.*).
