@@ -53,17 +53,21 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
     if (const char* f = std::getenv("EVADE_SIM_LCM_REALTIME_FACTOR")) {
       char* end = nullptr;
       pace_factor_ = std::strtod(f, &end);
-      if (end == f || *end != '\0' || !(pace_factor_ > 0.0) || !(pace_factor_ <= 1e6))
+      if (end == f || *end != '\0' || !(pace_factor_ > 0.0) || !(pace_factor_ <= 1e6)) {
+        lcm_destroy(lcm_);  // the destructor does not run when the constructor throws
         throw std::invalid_argument(std::string("EVADE_SIM_LCM_REALTIME_FACTOR = '") + f +
                                     "': must be a number in (0, 1e6]");
+      }
     }
     nav_pub_ = std::make_unique<RawPublisher<evade_nav_state_t>>(lcm_, kChanNav);
     ang_pub_ = std::make_unique<RawPublisher<evade_angles_t>>(lcm_, kChanAngles);
     clk_pub_ = std::make_unique<RawPublisher<evade_sim_clock_t>>(lcm_, kChanClock);
     cmd_sub_ = lcm_subscribe(lcm_, kChanCmd, &LcmEndpoint::on_cmd, this);
     st_sub_ = lcm_subscribe(lcm_, kChanStatus, &LcmEndpoint::on_status, this);
-    if (cmd_sub_ == nullptr || st_sub_ == nullptr)
+    if (cmd_sub_ == nullptr || st_sub_ == nullptr) {
+      lcm_destroy(lcm_);
       throw std::runtime_error("evade sim: cannot subscribe on LCM URL '" + url + "'");
+    }
   }
   ~LcmEndpoint() override {
     lcm_unsubscribe(lcm_, cmd_sub_);
