@@ -1,0 +1,80 @@
+// Conjunction assessment of one encounter: TCA refinement, covariance checks, the
+// encounter plane, the 2D Pc (quadrature), Chan's series, Alfano's maximum Pc, the
+// short-term validity test and, on request, the Monte Carlo Pc.
+//
+// States not at TCA (r.v != 0) are brought to the local TCA by two-body + J2 propagation of
+// both objects (covariance_propagation.hpp): Newton iteration on the range rate,
+// dt = -(r.v)/|v|^2 with r, v re-propagated each step, until |dt| < 1 us, within
+// +- tca_search_s. 6x6 covariances are propagated to the new TCA with the J2 state
+// transition matrix; 3x3 position covariances cannot be (no velocity block) and are held
+// constant over the shift, which the result states.
+// Short-term validity (Chan 2008 ch. 4; Alfano 2009): the 2D Pc assumes rectilinear relative
+// motion during the encounter. The encounter time T = 2 (5 sigma_v + HBR) / v_rel, with
+// sigma_v the combined position sigma along the relative velocity, is compared with the
+// shorter orbital period (T <= f P), and the relative-speed uncertainty (6x6 covariances)
+// with the relative speed (sigma <= g v_rel); either failure is reported with its reason,
+// and the Monte Carlo Pc (monte_carlo_pc.hpp) is the estimate to use.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "evade/assessment/assess_params.hpp"
+#include "evade/assessment/encounter_plane.hpp"
+#include "evade/assessment/monte_carlo_pc.hpp"
+#include "evade/core/constants.hpp"
+#include "evade/core/state.hpp"
+
+namespace evade::assessment {
+
+struct ObjectState {
+  std::string name;
+  StateEci state;
+  Mat6 cov_eci = Mat6::Zero();  ///< ECI [m^2, m^2/s, m^2/s^2]; velocity block zero if unknown
+  bool has_velocity_cov = false;
+};
+
+struct ConjunctionInput {
+  ObjectState obj[2];
+  double hbr_m = 0.0;
+  EarthModel earth = kEarthDefault;
+};
+
+struct ShortTermCheck {
+  bool valid = true;
+  double encounter_time_s = 0.0;
+  double period_s = 0.0;
+  double rel_speed_sigma_mps = 0.0;
+  std::string reason;  ///< empty when valid
+};
+
+struct Assessment {
+  ObjectState at_tca[2];          ///< states and covariances used (after TCA shift, repair)
+  double tca_shift_s = 0.0;       ///< TCA minus the epoch of the given states
+  std::string tca_method;         ///< how the states were brought to TCA
+  std::string covariance_propagation;
+  bool npd[2] = {false, false};   ///< covariance repaired by eigenvalue clipping
+  double min_eigenvalue[2] = {0.0, 0.0};
+  EncounterPlane plane;
+  PrincipalEncounter principal;
+  Pc2dResult pc_2d;
+  double pc_chan = 0.0;
+  PcMaxResult pc_max;
+  ShortTermCheck short_term;
+  std::optional<MonteCarloResult> mc;
+};
+
+/// Throws std::invalid_argument on bad input (hbr <= 0, zero relative speed, TCA not found
+/// within tca_search_s).
+Assessment assess(const ConjunctionInput& in, const AssessConfig& cfg,
+                  const std::optional<MonteCarloOptions>& mc = std::nullopt);
+
+/// The Monte Carlo window for an assessment: min((k sigma_max + HBR) / v_rel, P/2).
+double mc_window_s(const Assessment& a, double hbr_m, const AssessConfig& cfg,
+                   const EarthModel& earth);
+
+/// Pc only (2D quadrature) of two objects already at TCA, covariances used as given after
+/// repair; the planner's inner evaluation.
+double pc_at_tca(const ObjectState& o1, const ObjectState& o2, double hbr_m, double rel_tol);
+
+}  // namespace evade::assessment

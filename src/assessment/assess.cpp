@@ -1,0 +1,132 @@
+// One-encounter assessment (include/evade/assessment/assess.hpp gives the steps and sources).
+#include "evade/assessment/assess.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "evade/assessment/covariance.hpp"
+#include "evade/assessment/covariance_propagation.hpp"
+
+namespace evade::assessment {
+namespace {
+
+double period_s(const StateEci& s, const EarthModel& earth) {
+  const double r = s.r_eci_m.norm();
+  const double a = 1.0 / (2.0 / r - s.v_eci_mps.squaredNorm() / earth.mu_m3ps2);
+  if (!(a > 0.0)) return 1e300;  // hyperbolic: no period
+  return kTwoPi * std::sqrt(a * a * a / earth.mu_m3ps2);
+}
+
+// Newton on the range rate with two-body + J2 propagation of both objects.
+void bring_to_tca(ConjunctionInput& in, const AssessConfig& cfg, Assessment& out) {
+  double total = 0.0;
+  if (cfg.tca_search_s == 0.0) return;  // states used as given
+  for (int it = 0; it < 50; ++it) {
+    const Vec3 r = in.obj[1].state.r_eci_m - in.obj[0].state.r_eci_m;
+    const Vec3 v = in.obj[1].state.v_eci_mps - in.obj[0].state.v_eci_mps;
+    if (!(v.squaredNorm() > 0.0)) throw std::invalid_argument("assess: relative speed is zero");
+    const double dt = -r.dot(v) / v.squaredNorm();
+    if (std::abs(dt) < 1e-6) {
+      out.tca_shift_s = total;
+      return;
+    }
+    if (std::abs(total + dt) > cfg.tca_search_s) break;
+    for (auto& o : in.obj) {
+      if (o.has_velocity_cov) o.cov_eci = propagate_covariance_j2(o.state, o.cov_eci, dt, in.earth);
+      o.state = propagate_j2(o.state, dt, in.earth);
+    }
+    total += dt;
+  }
+  throw std::invalid_argument("assess: no local TCA within assessment.tca_search_s = " +
+                              std::to_string(cfg.tca_search_s) + " s of the given states");
+}
+
+ShortTermCheck short_term(const Assessment& a, double hbr_m, const AssessConfig& cfg,
+                          const EarthModel& earth) {
+  ShortTermCheck st;
+  const Vec3 y = a.plane.axes_eci.row(1).transpose();
+  const Mat3 c = a.at_tca[0].cov_eci.block<3, 3>(0, 0) + a.at_tca[1].cov_eci.block<3, 3>(0, 0);
+  const double sigma_along = std::sqrt(std::max(0.0, y.dot(c * y)));
+  st.encounter_time_s = 2.0 * (5.0 * sigma_along + hbr_m) / a.plane.rel_speed_mps;
+  st.period_s = std::min(period_s(a.at_tca[0].state, earth), period_s(a.at_tca[1].state, earth));
+  const Mat3 cv = a.at_tca[0].cov_eci.block<3, 3>(3, 3) + a.at_tca[1].cov_eci.block<3, 3>(3, 3);
+  st.rel_speed_sigma_mps = std::sqrt(std::max(0.0, y.dot(cv * y)));
+  if (st.encounter_time_s > cfg.short_term_max_period_fraction * st.period_s) {
+    st.valid = false;
+    st.reason = "encounter time " + std::to_string(st.encounter_time_s) + " s exceeds " +
+                std::to_string(cfg.short_term_max_period_fraction) + " of the orbital period (" +
+                std::to_string(st.period_s) + " s): the relative motion is not rectilinear";
+  } else if (st.rel_speed_sigma_mps > cfg.short_term_max_vel_sigma_ratio * a.plane.rel_speed_mps) {
+    st.valid = false;
+    st.reason = "relative-speed sigma " + std::to_string(st.rel_speed_sigma_mps) +
+                " m/s exceeds " + std::to_string(cfg.short_term_max_vel_sigma_ratio) +
+                " of the relative speed: velocity uncertainty is not negligible";
+  }
+  return st;
+}
+
+}  // namespace
+
+double pc_at_tca(const ObjectState& o1, const ObjectState& o2, double hbr_m, double rel_tol) {
+  const Mat3 c1 = repair_covariance(o1.cov_eci.block<3, 3>(0, 0), o1.name).cov_m2;
+  const Mat3 c2 = repair_covariance(o2.cov_eci.block<3, 3>(0, 0), o2.name).cov_m2;
+  const EncounterPlane ep = encounter_plane(o1.state, c1, o2.state, c2);
+  return pc_2d(principal_axes(ep), hbr_m, rel_tol).pc;
+}
+
+double mc_window_s(const Assessment& a, double hbr_m, const AssessConfig& cfg,
+                   const EarthModel& earth) {
+  Eigen::SelfAdjointEigenSolver<Mat3> es(a.at_tca[0].cov_eci.block<3, 3>(0, 0) +
+                                         a.at_tca[1].cov_eci.block<3, 3>(0, 0));
+  const double sigma_max = std::sqrt(std::max(0.0, es.eigenvalues().maxCoeff()));
+  const double w = (cfg.mc_window_sigmas * sigma_max + hbr_m) / a.plane.rel_speed_mps;
+  const double half_period =
+      0.5 * std::min(period_s(a.at_tca[0].state, earth), period_s(a.at_tca[1].state, earth));
+  return std::min(w, half_period);
+}
+
+Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
+                  const std::optional<MonteCarloOptions>& mc) {
+  if (!(given.hbr_m > 0.0) || !std::isfinite(given.hbr_m)) {
+    throw std::invalid_argument("assess: hbr_m must be a finite number > 0 m");
+  }
+  ConjunctionInput in = given;
+  Assessment a;
+  bring_to_tca(in, cfg, a);
+  a.tca_method = cfg.tca_search_s == 0.0 ? "states used as given (assessment.tca_search_s = 0)"
+                 : a.tca_shift_s == 0.0
+                     ? "states given at TCA (r.v = 0 to 1 us)"
+                     : "both states propagated (two-body + J2, DOP853) to the local TCA, "
+                       "Newton on the range rate";
+  const bool both6 = in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov;
+  a.covariance_propagation =
+      a.tca_shift_s == 0.0 ? "none (covariances given at TCA)"
+      : both6 ? "Phi P Phi^T with the two-body + J2 state transition matrix"
+              : "6x6 covariances by the J2 state transition matrix; 3x3 position covariances "
+                "held constant over the shift";
+  for (int i = 0; i < 2; ++i) {
+    a.at_tca[i] = in.obj[i];
+    const CovarianceRepair rep =
+        repair_covariance(in.obj[i].cov_eci.block<3, 3>(0, 0), in.obj[i].name);
+    a.at_tca[i].cov_eci.block<3, 3>(0, 0) = rep.cov_m2;
+    a.npd[i] = rep.npd;
+    a.min_eigenvalue[i] = rep.min_eigenvalue_m2;
+  }
+  a.plane = encounter_plane(a.at_tca[0].state, a.at_tca[0].cov_eci.block<3, 3>(0, 0),
+                            a.at_tca[1].state, a.at_tca[1].cov_eci.block<3, 3>(0, 0));
+  a.principal = principal_axes(a.plane);
+  a.pc_2d = pc_2d(a.principal, in.hbr_m, cfg.pc_rel_tol);
+  a.pc_chan = pc_chan(a.principal, in.hbr_m);
+  a.pc_max = pc_max_alfano(a.principal, in.hbr_m);
+  a.short_term = short_term(a, in.hbr_m, cfg, in.earth);
+  if (mc) {
+    MonteCarloOptions o = *mc;
+    if (!(o.window_s > 0.0)) o.window_s = mc_window_s(a, in.hbr_m, cfg, in.earth);
+    a.mc = pc_monte_carlo(a.at_tca[0].state, a.at_tca[0].cov_eci, a.at_tca[1].state,
+                          a.at_tca[1].cov_eci, in.hbr_m, in.earth.mu_m3ps2, o);
+  }
+  return a;
+}
+
+}  // namespace evade::assessment

@@ -1,0 +1,189 @@
+// 2D Pc by adaptive quadrature, Chan's series and Alfano's maximum Pc
+// (include/evade/assessment/pc_2d.hpp gives the sources and equations).
+#include "evade/assessment/pc_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "evade/core/constants.hpp"
+
+namespace evade::assessment {
+namespace {
+
+void check_input(const PrincipalEncounter& e, double hbr_m) {
+  const bool finite = std::isfinite(e.miss_x_m) && std::isfinite(e.miss_y_m) &&
+                      std::isfinite(e.sigma_x_m) && std::isfinite(e.sigma_y_m) &&
+                      std::isfinite(hbr_m);
+  if (!finite) throw std::invalid_argument("Pc: non-finite miss, sigma or hard-body radius");
+  if (!(e.sigma_x_m > 0.0) || !(e.sigma_y_m > 0.0)) {
+    throw std::invalid_argument("Pc: encounter-plane sigmas must be > 0 m (got " +
+                                std::to_string(e.sigma_x_m) + ", " +
+                                std::to_string(e.sigma_y_m) + ")");
+  }
+  if (!(hbr_m > 0.0)) {
+    throw std::invalid_argument("Pc: hard-body radius must be > 0 m (got " +
+                                std::to_string(hbr_m) + ")");
+  }
+}
+
+// P(a <= Y <= b) for Y ~ N(0, s^2), without cancellation in either tail.
+double normal_interval(double a, double b, double s) {
+  const double k = 1.0 / (std::sqrt(2.0) * s);
+  if (a >= 0.0) return 0.5 * (std::erfc(a * k) - std::erfc(b * k));
+  if (b <= 0.0) return 0.5 * (std::erfc(-b * k) - std::erfc(-a * k));
+  return 1.0 - 0.5 * (std::erfc(-a * k) + std::erfc(b * k));
+}
+
+struct Integrand {
+  PrincipalEncounter e;
+  double r = 0.0;
+  double operator()(double t) const {
+    const double x = e.miss_x_m + r * std::sin(t);
+    const double h = r * std::cos(t);
+    const double gx = std::exp(-0.5 * x * x / (e.sigma_x_m * e.sigma_x_m)) /
+                      (std::sqrt(2.0 * kPi) * e.sigma_x_m);
+    return gx * normal_interval(e.miss_y_m - h, e.miss_y_m + h, e.sigma_y_m) * h;
+  }
+};
+
+struct Panel {
+  double a = 0.0, b = 0.0, value = 0.0, error = 0.0;
+  bool operator<(const Panel& o) const { return error < o.error; }
+};
+
+// Gauss-Kronrod (7, 15) nodes and weights (Piessens et al. 1983).
+Panel gauss_kronrod(const Integrand& f, double a, double b) {
+  static const double xk[8] = {0.991455371120812639, 0.949107912342758525, 0.864864423359769073,
+                               0.741531185599394440, 0.586087235467691130, 0.405845151377397167,
+                               0.207784955007898468, 0.0};
+  static const double wk[8] = {0.022935322010529225, 0.063092092629978553, 0.104790010322250184,
+                               0.140653259715525919, 0.169004726639267903, 0.190350578064785410,
+                               0.204432940075298892, 0.209482141084727828};
+  static const double wg[4] = {0.129484966168869693, 0.279705391489276668,
+                               0.381830050505118945, 0.417959183673469388};
+  const double c = 0.5 * (a + b);
+  const double h = 0.5 * (b - a);
+  const double fc = f(c);
+  double k = wk[7] * fc;
+  double g = wg[3] * fc;
+  for (int i = 0; i < 7; ++i) {
+    const double s = f(c - h * xk[i]) + f(c + h * xk[i]);
+    k += wk[i] * s;
+    if (i % 2 == 1) g += wg[i / 2] * s;
+  }
+  return {a, b, k * h, std::abs((k - g) * h)};
+}
+
+// Break points in t where the integrand turns: x = 0 +- k sx and R cos t = |ym| +- k sy.
+std::vector<double> break_points(const PrincipalEncounter& e, double r) {
+  std::vector<double> t = {-0.5 * kPi, 0.5 * kPi};
+  for (double k : {0.0, -1.0, 1.0, -3.0, 3.0, -6.0, 6.0}) {
+    const double sx = (k * e.sigma_x_m - e.miss_x_m) / r;
+    if (std::abs(sx) < 1.0) t.push_back(std::asin(sx));
+    const double cy = (std::abs(e.miss_y_m) + k * e.sigma_y_m) / r;
+    if (cy > 0.0 && cy < 1.0) {
+      t.push_back(std::acos(cy));
+      t.push_back(-std::acos(cy));
+    }
+  }
+  for (int i = 1; i < 8; ++i) t.push_back(-0.5 * kPi + i * kPi / 8.0);
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
+
+}  // namespace
+
+Pc2dResult pc_2d(const PrincipalEncounter& e, double hbr_m, double rel_tol) {
+  check_input(e, hbr_m);
+  if (!(rel_tol > 0.0)) throw std::invalid_argument("pc_2d: rel_tol must be > 0");
+  const Integrand f{e, hbr_m};
+  std::priority_queue<Panel> panels;
+  const std::vector<double> t = break_points(e, hbr_m);
+  double value = 0.0, error = 0.0;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    const Panel p = gauss_kronrod(f, t[i], t[i + 1]);
+    value += p.value;
+    error += p.error;
+    panels.push(p);
+  }
+  constexpr int kMaxPanels = 20000;
+  while (error > rel_tol * std::abs(value) && error > 1e-300 &&
+         static_cast<int>(panels.size()) < kMaxPanels) {
+    const Panel worst = panels.top();
+    panels.pop();
+    const double m = 0.5 * (worst.a + worst.b);
+    const Panel l = gauss_kronrod(f, worst.a, m);
+    const Panel r = gauss_kronrod(f, m, worst.b);
+    value += l.value + r.value - worst.value;
+    error += l.error + r.error - worst.error;
+    panels.push(l);
+    panels.push(r);
+  }
+  return {std::min(1.0, std::max(0.0, value)), error, static_cast<int>(panels.size())};
+}
+
+double pc_chan(const PrincipalEncounter& e, double hbr_m) {
+  check_input(e, hbr_m);
+  const double u2 = 0.5 * hbr_m * hbr_m / (e.sigma_x_m * e.sigma_y_m);
+  const double v2 = 0.5 * (e.miss_x_m * e.miss_x_m / (e.sigma_x_m * e.sigma_x_m) +
+                           e.miss_y_m * e.miss_y_m / (e.sigma_y_m * e.sigma_y_m));
+  // Poisson upper tail P(K > m), K ~ Poisson(u/2), summed term by term (no cancellation).
+  auto upper_tail = [u2](int m) {
+    double term = std::exp(-u2 + (m + 1) * std::log(u2) - std::lgamma(m + 2.0));
+    double sum = 0.0;
+    for (int k = m + 1; k < m + 2000 && term > 1e-300; ++k) {
+      sum += term;
+      if (term < 1e-17 * sum) break;
+      term *= u2 / (k + 1);
+    }
+    return sum;
+  };
+  double sum = 0.0;
+  for (int m = 0; m < 100000; ++m) {
+    const double a = std::exp(-v2 + (m > 0 ? m * std::log(v2) : 0.0) - std::lgamma(m + 1.0));
+    const double term = a * upper_tail(m);
+    sum += term;
+    if (m > v2 && term < 1e-17 * sum) break;
+    if (v2 == 0.0) break;
+  }
+  return std::min(1.0, sum);
+}
+
+PcMaxResult pc_max_alfano(const PrincipalEncounter& e, double hbr_m) {
+  check_input(e, hbr_m);
+  auto pc_at = [&](double log_k) {
+    const double k = std::exp(log_k);
+    PrincipalEncounter s = e;
+    s.sigma_x_m *= k;
+    s.sigma_y_m *= k;
+    return pc_2d(s, hbr_m, 1e-10).pc;
+  };
+  // Coarse scan for the bracket, then golden section on log k (Pc(k) is unimodal in k).
+  double best = std::log(1e-4);
+  double best_pc = -1.0;
+  const double step = std::log(1e8) / 160.0;
+  for (int i = 0; i <= 160; ++i) {
+    const double lk = std::log(1e-4) + i * step;
+    const double p = pc_at(lk);
+    if (p > best_pc) { best_pc = p; best = lk; }
+  }
+  double a = best - step, b = best + step;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - g * (b - a), d = a + g * (b - a);
+  double fc = pc_at(c), fd = pc_at(d);
+  for (int it = 0; it < 80 && (b - a) > 1e-10; ++it) {
+    if (fc > fd) { b = d; d = c; fd = fc; c = b - g * (b - a); fc = pc_at(c); }
+    else { a = c; c = d; fc = fd; d = a + g * (b - a); fd = pc_at(d); }
+  }
+  const double lk = 0.5 * (a + b);
+  const double p = pc_at(lk);
+  if (p >= best_pc) return {p, std::exp(lk)};
+  return {best_pc, std::exp(best)};
+}
+
+}  // namespace evade::assessment
