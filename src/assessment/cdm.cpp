@@ -1,0 +1,300 @@
+// CDM model, keyword tables and checks (include/evade/assessment/cdm.hpp; CCSDS 508.0-B-1
+// tables 3-2 header, 3-3 relative metadata/data, 3-4 object metadata, 3-5 OD and additional
+// parameters, state vector, 3-6 covariance).
+#include "evade/assessment/cdm.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+#include "evade/core/epoch.hpp"
+
+namespace evade::assessment {
+namespace {
+
+enum class Kind { kText, kNumber, kEpoch };
+
+const std::vector<std::string> kHeader = {"CCSDS_CDM_VERS", "CREATION_DATE", "ORIGINATOR",
+                                          "MESSAGE_FOR", "MESSAGE_ID"};
+const std::vector<std::string> kRelative = {
+    "TCA", "MISS_DISTANCE", "RELATIVE_SPEED", "RELATIVE_POSITION_R", "RELATIVE_POSITION_T",
+    "RELATIVE_POSITION_N", "RELATIVE_VELOCITY_R", "RELATIVE_VELOCITY_T", "RELATIVE_VELOCITY_N",
+    "START_SCREEN_PERIOD", "STOP_SCREEN_PERIOD", "SCREEN_VOLUME_FRAME", "SCREEN_VOLUME_SHAPE",
+    "SCREEN_VOLUME_X", "SCREEN_VOLUME_Y", "SCREEN_VOLUME_Z", "SCREEN_ENTRY_TIME",
+    "SCREEN_EXIT_TIME", "COLLISION_PROBABILITY", "COLLISION_PROBABILITY_METHOD"};
+const std::vector<std::string> kMetadata = {
+    "OBJECT", "OBJECT_DESIGNATOR", "CATALOG_NAME", "OBJECT_NAME", "INTERNATIONAL_DESIGNATOR",
+    "OBJECT_TYPE", "OPERATOR_CONTACT_POSITION", "OPERATOR_ORGANIZATION", "OPERATOR_PHONE",
+    "OPERATOR_EMAIL", "EPHEMERIS_NAME", "COVARIANCE_METHOD", "MANEUVERABLE", "ORBIT_CENTER",
+    "REF_FRAME", "GRAVITY_MODEL", "ATMOSPHERIC_MODEL", "N_BODY_PERTURBATIONS",
+    "SOLAR_RAD_PRESSURE", "EARTH_TIDES", "INTRACK_THRUST"};
+const std::vector<std::string> kOd = {
+    "TIME_LASTOB_START", "TIME_LASTOB_END", "RECOMMENDED_OD_SPAN", "ACTUAL_OD_SPAN",
+    "OBS_AVAILABLE", "OBS_USED", "TRACKS_AVAILABLE", "TRACKS_USED", "RESIDUALS_ACCEPTED",
+    "WEIGHTED_RMS"};
+const std::vector<std::string> kAdditional = {"AREA_PC", "AREA_DRG", "AREA_SRP", "MASS",
+                                              "CD_AREA_OVER_MASS", "CR_AREA_OVER_MASS",
+                                              "THRUST_ACCELERATION", "SEDR"};
+const std::vector<std::string> kState = {"X", "Y", "Z", "X_DOT", "Y_DOT", "Z_DOT"};
+const char* const kCovAxes[9] = {"R", "T", "N", "RDOT", "TDOT", "NDOT", "DRG", "SRP", "THR"};
+
+std::vector<std::string> covariance_keywords() {
+  std::vector<std::string> k;
+  const char* rows[9] = {"CR", "CT", "CN", "CRDOT", "CTDOT", "CNDOT", "CDRG", "CSRP", "CTHR"};
+  for (int i = 0; i < 9; ++i) {
+    for (int j = 0; j <= i; ++j) k.push_back(std::string(rows[i]) + "_" + kCovAxes[j]);
+  }
+  return k;
+}
+const std::vector<std::string> kCovariance = covariance_keywords();
+
+const std::set<std::string> kMandatory = {
+    "CCSDS_CDM_VERS", "CREATION_DATE", "ORIGINATOR", "MESSAGE_ID", "TCA", "MISS_DISTANCE",
+    "OBJECT", "OBJECT_DESIGNATOR", "CATALOG_NAME", "OBJECT_NAME", "INTERNATIONAL_DESIGNATOR",
+    "EPHEMERIS_NAME", "COVARIANCE_METHOD", "MANEUVERABLE", "REF_FRAME", "X", "Y", "Z", "X_DOT",
+    "Y_DOT", "Z_DOT"};
+
+const std::set<std::string> kEpochs = {"CREATION_DATE", "TCA", "START_SCREEN_PERIOD",
+                                       "STOP_SCREEN_PERIOD", "SCREEN_ENTRY_TIME",
+                                       "SCREEN_EXIT_TIME", "TIME_LASTOB_START", "TIME_LASTOB_END"};
+
+const std::map<std::string, std::vector<std::string>> kEnums = {
+    {"OBJECT", {"OBJECT1", "OBJECT2"}},
+    {"MANEUVERABLE", {"YES", "NO", "N/A"}},
+    {"COVARIANCE_METHOD", {"CALCULATED", "DEFAULT"}},
+    {"REF_FRAME", {"EME2000", "GCRF", "ITRF"}},
+    {"SCREEN_VOLUME_FRAME", {"RTN", "TVN"}},
+    {"SCREEN_VOLUME_SHAPE", {"ELLIPSOID", "BOX"}},
+    {"OBJECT_TYPE", {"PAYLOAD", "ROCKET BODY", "DEBRIS", "UNKNOWN", "OTHER"}},
+    {"SOLAR_RAD_PRESSURE", {"YES", "NO"}},
+    {"EARTH_TIDES", {"YES", "NO"}},
+    {"INTRACK_THRUST", {"YES", "NO"}}};
+
+std::string covariance_unit(const std::string& key) {
+  const auto us = key.find('_');
+  const std::string row = key.substr(1, us - 1), col = key.substr(us + 1);
+  auto kind = [](const std::string& a) {  // 0 pos, 1 vel, 2 drg/srp, 3 thr
+    if (a == "R" || a == "T" || a == "N") return 0;
+    if (a == "RDOT" || a == "TDOT" || a == "NDOT") return 1;
+    return a == "THR" ? 3 : 2;
+  };
+  const int r = kind(row), c = kind(col);
+  static const char* table[4][4] = {
+      {"m**2", "m**2/s", "m**3/kg", "m**2/s**2"},
+      {"m**2/s", "m**2/s**2", "m**3/(kg*s)", "m**2/s**3"},
+      {"m**3/kg", "m**3/(kg*s)", "m**4/kg**2", "m**3/(kg*s**2)"},
+      {"m**2/s**2", "m**2/s**3", "m**3/(kg*s**2)", "m**2/s**4"}};
+  return table[r][c];
+}
+
+Kind keyword_kind(const std::string& key, CdmSectionId id) {
+  if (kEpochs.count(key)) return Kind::kEpoch;
+  if (id == CdmSectionId::kCovariance || id == CdmSectionId::kState ||
+      id == CdmSectionId::kAdditional)
+    return Kind::kNumber;
+  static const std::set<std::string> numbers = {
+      "CCSDS_CDM_VERS", "MISS_DISTANCE", "RELATIVE_SPEED", "RELATIVE_POSITION_R",
+      "RELATIVE_POSITION_T", "RELATIVE_POSITION_N", "RELATIVE_VELOCITY_R",
+      "RELATIVE_VELOCITY_T", "RELATIVE_VELOCITY_N", "SCREEN_VOLUME_X", "SCREEN_VOLUME_Y",
+      "SCREEN_VOLUME_Z", "COLLISION_PROBABILITY", "RECOMMENDED_OD_SPAN", "ACTUAL_OD_SPAN",
+      "OBS_AVAILABLE", "OBS_USED", "TRACKS_AVAILABLE", "TRACKS_USED", "RESIDUALS_ACCEPTED",
+      "WEIGHTED_RMS"};
+  return numbers.count(key) ? Kind::kNumber : Kind::kText;
+}
+
+[[noreturn]] void fail(const CdmItem& it, const std::string& what) {
+  throw CdmError("CDM line " + std::to_string(it.line) + ": keyword '" + it.key + "': " + what);
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+void check_item(const CdmItem& it, CdmSectionId id) {
+  if (it.key == "COMMENT") return;
+  if (it.value.empty()) fail(it, "expected a value, found none");
+  const Kind k = keyword_kind(it.key, id);
+  if (k == Kind::kNumber) {
+    char* end = nullptr;
+    const double v = std::strtod(it.value.c_str(), &end);
+    if (end == it.value.c_str() || *end != '\0' || !std::isfinite(v))
+      fail(it, "expected a number, found '" + it.value + "'");
+  } else if (k == Kind::kEpoch) {
+    try {
+      (void)parse_calendar_utc(it.value);
+    } catch (const std::exception&) {
+      fail(it, "expected an epoch YYYY-MM-DDThh:mm:ss[.d], found '" + it.value + "'");
+    }
+  }
+  const std::string unit = cdm_keyword_unit(it.key);
+  if (!it.unit.empty() && upper(it.unit) != upper(unit))
+    fail(it, "expected unit [" + (unit.empty() ? std::string("none") : unit) + "], found [" +
+                 it.unit + "]");
+  const auto e = kEnums.find(it.key);
+  if (e != kEnums.end() &&
+      std::find(e->second.begin(), e->second.end(), upper(it.value)) == e->second.end()) {
+    std::string allowed;
+    for (const auto& a : e->second) allowed += (allowed.empty() ? "" : ", ") + a;
+    fail(it, "expected one of " + allowed + ", found '" + it.value + "'");
+  }
+}
+
+void check_section(const CdmSection& s, CdmSectionId id, int last_line,
+                   const std::string& where) {
+  std::set<std::string> seen;
+  for (const CdmItem& it : s.items) {
+    CdmSectionId sid;
+    if (it.key != "COMMENT" && (!cdm_keyword_section(it.key, &sid) || sid != id))
+      fail(it, "not a keyword of the " + where + " section");
+    if (it.key != "COMMENT" && !seen.insert(it.key).second) fail(it, "given twice in " + where);
+    check_item(it, id);
+  }
+  std::vector<std::string> required;
+  const auto& kw = cdm_section_keywords(id);
+  for (std::size_t n = 0; n < kw.size(); ++n) {
+    if (kMandatory.count(kw[n]) || (id == CdmSectionId::kCovariance && n < 21))
+      required.push_back(kw[n]);
+  }
+  for (const auto& k : required) {
+    if (!seen.count(k)) {
+      throw CdmError("CDM line " + std::to_string(last_line) + ": keyword '" + k +
+                     "': mandatory in " + where + " but missing");
+    }
+  }
+}
+
+int last_line(const Cdm& c) {
+  int l = 0;
+  const CdmSection* all[] = {&c.header, &c.relative};
+  for (const CdmSection* s : all)
+    for (const auto& it : s->items) l = std::max(l, it.line);
+  for (const auto& o : c.object) {
+    for (auto id : {CdmSectionId::kMetadata, CdmSectionId::kOd, CdmSectionId::kAdditional,
+                    CdmSectionId::kState, CdmSectionId::kCovariance})
+      for (const auto& it : o.section(id).items) l = std::max(l, it.line);
+  }
+  return l;
+}
+
+}  // namespace
+
+const CdmItem* CdmSection::find(const std::string& key) const {
+  for (const auto& it : items)
+    if (it.key == key) return &it;
+  return nullptr;
+}
+
+CdmSection& CdmObject::section(CdmSectionId id) {
+  return const_cast<CdmSection&>(static_cast<const CdmObject*>(this)->section(id));
+}
+const CdmSection& CdmObject::section(CdmSectionId id) const {
+  switch (id) {
+    case CdmSectionId::kOd: return od_parameters;
+    case CdmSectionId::kAdditional: return additional_parameters;
+    case CdmSectionId::kState: return state_vector;
+    case CdmSectionId::kCovariance: return covariance;
+    default: return metadata;
+  }
+}
+bool CdmObject::operator==(const CdmObject& o) const {
+  return metadata == o.metadata && od_parameters == o.od_parameters &&
+         additional_parameters == o.additional_parameters && state_vector == o.state_vector &&
+         covariance == o.covariance;
+}
+bool Cdm::operator==(const Cdm& o) const {
+  return header == o.header && relative == o.relative && object[0] == o.object[0] &&
+         object[1] == o.object[1];
+}
+
+const std::vector<std::string>& cdm_section_keywords(CdmSectionId id) {
+  switch (id) {
+    case CdmSectionId::kHeader: return kHeader;
+    case CdmSectionId::kRelative: return kRelative;
+    case CdmSectionId::kMetadata: return kMetadata;
+    case CdmSectionId::kOd: return kOd;
+    case CdmSectionId::kAdditional: return kAdditional;
+    case CdmSectionId::kState: return kState;
+    case CdmSectionId::kCovariance: return kCovariance;
+  }
+  return kHeader;
+}
+
+bool cdm_keyword_section(const std::string& key, CdmSectionId* id) {
+  for (auto s : {CdmSectionId::kHeader, CdmSectionId::kRelative, CdmSectionId::kMetadata,
+                 CdmSectionId::kOd, CdmSectionId::kAdditional, CdmSectionId::kState,
+                 CdmSectionId::kCovariance}) {
+    const auto& k = cdm_section_keywords(s);
+    if (std::find(k.begin(), k.end(), key) != k.end()) {
+      *id = s;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string cdm_keyword_unit(const std::string& key) {
+  static const std::map<std::string, std::string> units = {
+      {"MISS_DISTANCE", "m"}, {"RELATIVE_SPEED", "m/s"}, {"RELATIVE_POSITION_R", "m"},
+      {"RELATIVE_POSITION_T", "m"}, {"RELATIVE_POSITION_N", "m"},
+      {"RELATIVE_VELOCITY_R", "m/s"}, {"RELATIVE_VELOCITY_T", "m/s"},
+      {"RELATIVE_VELOCITY_N", "m/s"}, {"SCREEN_VOLUME_X", "m"}, {"SCREEN_VOLUME_Y", "m"},
+      {"SCREEN_VOLUME_Z", "m"}, {"RECOMMENDED_OD_SPAN", "d"}, {"ACTUAL_OD_SPAN", "d"},
+      {"RESIDUALS_ACCEPTED", "%"}, {"AREA_PC", "m**2"}, {"AREA_DRG", "m**2"},
+      {"AREA_SRP", "m**2"}, {"MASS", "kg"}, {"CD_AREA_OVER_MASS", "m**2/kg"},
+      {"CR_AREA_OVER_MASS", "m**2/kg"}, {"THRUST_ACCELERATION", "m/s**2"}, {"SEDR", "W/kg"},
+      {"X", "km"}, {"Y", "km"}, {"Z", "km"}, {"X_DOT", "km/s"}, {"Y_DOT", "km/s"},
+      {"Z_DOT", "km/s"}};
+  const auto u = units.find(key);
+  if (u != units.end()) return u->second;
+  CdmSectionId id;
+  if (cdm_keyword_section(key, &id) && id == CdmSectionId::kCovariance) return covariance_unit(key);
+  return "";
+}
+
+void validate_cdm(const Cdm& c) {
+  const int end = last_line(c);
+  check_section(c.header, CdmSectionId::kHeader, end, "the header");
+  check_section(c.relative, CdmSectionId::kRelative, end, "the relative metadata/data");
+  for (int i = 0; i < 2; ++i) {
+    const std::string where = "object " + std::to_string(i + 1);
+    const CdmObject& o = c.object[i];
+    check_section(o.metadata, CdmSectionId::kMetadata, end, where + " metadata");
+    check_section(o.od_parameters, CdmSectionId::kOd, end, where + " OD parameters");
+    check_section(o.additional_parameters, CdmSectionId::kAdditional, end,
+                  where + " additional parameters");
+    check_section(o.state_vector, CdmSectionId::kState, end, where + " state vector");
+    check_section(o.covariance, CdmSectionId::kCovariance, end, where + " covariance");
+    const CdmItem* obj = o.metadata.find("OBJECT");
+    const std::string want = i == 0 ? "OBJECT1" : "OBJECT2";
+    if (upper(obj->value) != want) fail(*obj, "expected " + want + ", found '" + obj->value + "'");
+  }
+}
+
+std::string cdm_value(const CdmSection& s, const std::string& key) {
+  const CdmItem* it = s.find(key);
+  return it ? it->value : std::string();
+}
+
+StateEci cdm_state(const Cdm& c, int i) {
+  const CdmSection& s = c.object[i].state_vector;
+  auto v = [&](const char* k) { return std::strtod(cdm_value(s, k).c_str(), nullptr) * 1e3; };
+  return {Vec3(v("X"), v("Y"), v("Z")), Vec3(v("X_DOT"), v("Y_DOT"), v("Z_DOT"))};
+}
+
+Mat6 cdm_cov_rtn(const Cdm& c, int i) {
+  Mat6 m;
+  for (int r = 0; r < 6; ++r) {
+    for (int k = 0; k <= r; ++k) {
+      m(r, k) = m(k, r) =
+          std::strtod(cdm_value(c.object[i].covariance, kCovariance[r * (r + 1) / 2 + k]).c_str(),
+                      nullptr);
+    }
+  }
+  return m;
+}
+
+}  // namespace evade::assessment

@@ -1,0 +1,113 @@
+// CCSDS CDM (508.0-B-1): KVN -> model -> XML -> model round trip, ten malformed messages each
+// rejected naming the keyword and the line, and the Pc of the shipped Alfano 2009 case 01
+// CDM through the reader (NASA CARA Pc2D_Foster: 1.46749549e-01, relative tolerance 1e-3).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "evade/assessment/assess.hpp"
+#include "evade/assessment/cdm_kvn.hpp"
+#include "evade/assessment/cdm_xml.hpp"
+#include "evade/assessment/covariance.hpp"
+
+namespace evade::assessment {
+namespace {
+
+std::string shipped() {
+  std::ifstream in(std::string(EVADE_TEST_CDM_DIR) + "/alfano-2009-case01.cdm");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// Replaces the first line that starts with `key` by `with` (empty: deletes it).
+std::string edit(const std::string& text, const std::string& key, const std::string& with) {
+  std::istringstream in(text);
+  std::string line, out;
+  bool done = false;
+  while (std::getline(in, line)) {
+    if (!done && line.rfind(key, 0) == 0) {
+      done = true;
+      if (!with.empty()) out += with + "\n";
+      continue;
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+TEST(Cdm, KvnToXmlRoundTripIsIdentical) {
+  const Cdm a = read_cdm_kvn(shipped());
+  const std::string xml = write_cdm_xml(a);
+  const Cdm b = read_cdm_xml(xml);
+  EXPECT_TRUE(a == b);
+  EXPECT_TRUE(read_cdm_kvn(write_cdm_kvn(b)) == a);
+  EXPECT_EQ(cdm_value(b.object[1].additional_parameters, "MASS"), "500.0");
+  EXPECT_EQ(b.object[0].covariance.items.size(), 28u);  // 21 + the 7 CDRG terms
+  EXPECT_NE(xml.find("<relativeStateVector>"), std::string::npos);
+}
+
+TEST(Cdm, PcOfShippedAlfanoCase01) {
+  const Cdm c = read_cdm_kvn(shipped());
+  ConjunctionInput in;
+  in.hbr_m = 15.0;
+  for (int i = 0; i < 2; ++i) {
+    in.obj[i].state = cdm_state(c, i);
+    in.obj[i].cov_eci = cov_eci_from_rtn(cdm_cov_rtn(c, i), in.obj[i].state);
+    in.obj[i].has_velocity_cov = true;
+  }
+  AssessConfig cfg;
+  cfg.tca_search_s = 0.0;
+  EXPECT_NEAR(assess(in, cfg).pc_2d.pc, 1.46749549e-01, 1e-3 * 1.46749549e-01);
+}
+
+struct Bad {
+  const char* key;       // line to edit
+  const char* with;      // replacement ("" deletes)
+  const char* keyword;   // expected in the message
+  const char* line;      // expected "line N"
+};
+
+TEST(Cdm, TenMalformedMessagesNameKeywordAndLine) {
+  const Bad bad[] = {
+      {"TCA ", "", "'TCA'", "line 103"},                                    // mandatory missing
+      {"MISS_DISTANCE", "MISS_DISTANCE = 5.0x [m]", "'MISS_DISTANCE'", "line 7"},
+      {"RELATIVE_SPEED", "RELATIVE_SPEED = 0.01 [km/s]", "'RELATIVE_SPEED'", "line 8"},
+      {"CREATION_DATE", "CREATION_DATE = 2000-13-01T00:00:00", "'CREATION_DATE'", "line 3"},
+      {"MANEUVERABLE", "MANEUVERABLE = MAYBE", "'MANEUVERABLE'", "line 23"},
+      {"REF_FRAME", "REF_FRAME = TEME", "'REF_FRAME'", "line 24"},
+      {"Y_DOT", "Y_DOT_DOT = 1 [km/s]", "'Y_DOT_DOT'", "line 37"},
+      {"CT_T", "CT_T", "'CT_T'", "line 41"},                                // no '='
+      {"OBJECT_NAME", "ORIGINATOR = ME", "'ORIGINATOR'", "line 19"},        // header after OBJECT
+      {"CN_N", "", "'CN_N'", "line 103"},                                   // covariance term missing
+  };
+  for (const Bad& b : bad) {
+    const std::string text = edit(shipped(), b.key, b.with);
+    try {
+      (void)read_cdm_kvn(text);
+      ADD_FAILURE() << "accepted: " << b.key << " -> " << b.with;
+    } catch (const CdmError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(b.keyword), std::string::npos) << m;
+      EXPECT_NE(m.find(b.line), std::string::npos) << m;
+    }
+  }
+}
+
+TEST(Cdm, MalformedXmlNamesElementAndLine) {
+  std::string xml = write_cdm_xml(read_cdm_kvn(shipped()));
+  const auto p = xml.find("<X units=\"km\">153.446765</X>");
+  ASSERT_NE(p, std::string::npos);
+  xml.replace(p, 29, "<X units=\"km\">abc</X>");
+  try {
+    (void)read_cdm_xml(xml);
+    ADD_FAILURE() << "accepted";
+  } catch (const CdmError& e) {
+    EXPECT_NE(std::string(e.what()).find("'X'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace evade::assessment
