@@ -1,0 +1,27 @@
+// Strict scalar parsing shared by the catalog readers: a whole field must be one number
+// (no trailing text, no hex, no inf/nan), Alpha-5 catalog numbers, ISO 8601 UTC epochs.
+#pragma once
+
+#include <string>
+
+namespace evade::sgp4 {
+
+/// Trims spaces, tabs, CR and LF at both ends.
+std::string trim(const std::string& s);
+
+/// A decimal number, optionally signed, with optional fraction and exponent ("-.00000084",
+/// "1.5E-4", "42"), surrounded by blanks only. False for anything else.
+bool parse_plain_decimal(const std::string& field, double& out);
+
+/// An integer (optionally signed) surrounded by blanks only.
+bool parse_plain_integer(const std::string& field, long& out);
+
+/// A 5-character NORAD catalog number: digits (leading blanks allowed) or Alpha-5
+/// (A..Z without I and O standing for 10..33, then 4 digits: "A0001" = 100001).
+bool parse_alpha5(const std::string& field, long& out);
+
+/// "YYYY-MM-DDThh:mm:ss[.f...]" or "YYYY-DDDThh:mm:ss[.f...]" (day of year), optional
+/// trailing 'Z', years 1957..2099. Gives the year and the day of year (1.0 = Jan 1 00:00).
+bool parse_iso_epoch(const std::string& text, int& year, double& day_of_year);
+
+}  // namespace evade::sgp4

@@ -1,0 +1,100 @@
+// SGP4/SDP4 analytic propagation of two-line mean elements in the TEME frame, after Vallado,
+// Crawford, Hujsak & Kelso (2006), "Revisiting Spacetrack Report #3", AIAA 2006-6753:
+// sgp4init (un-Kozai the mean motion, drag coefficients C1..C5 and D2..D4, secular rates
+// from J2, J4, Hoots & Roehrich 1980 eq. for the near-Earth model) and sgp4 (secular drag
+// and gravity, long-period J3 terms, Kepler's equation for the Lyddane variables, J2
+// short-period terms), with the deep-space branch (period >= 225 min) in deep_space.hpp.
+// Both operation modes: 'a' (AFSPC: the 1970-based sidereal time and the node quadrant
+// handling of the operational code) and 'i' (improved: IAU-82 GMST, no quadrant fix).
+// Errors are returned as the paper's codes, never thrown during propagation.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "evade/sgp4/deep_space.hpp"
+#include "evade/sgp4/gravity_constants.hpp"
+#include "evade/sgp4/mean_elements.hpp"
+
+namespace evade::sgp4 {
+
+enum class OperationMode : char { kAfspc = 'a', kImproved = 'i' };
+
+/// The paper's error codes (5, "epoch elements are sub-orbital", is no longer raised).
+enum class Sgp4Error : int {
+  kNone = 0,
+  kMeanEccentricity = 1,       ///< mean e >= 1 or e < -0.001
+  kMeanMotion = 2,             ///< mean motion <= 0
+  kPerturbedEccentricity = 3,  ///< perturbed e < 0 or e > 1 (deep space)
+  kSemiLatusRectum = 4,        ///< semi-latus rectum < 0
+  kSubOrbital = 5,
+  kDecayed = 6,                ///< radius below one Earth radius
+};
+
+/// "mean eccentricity out of range (error 1)", ...
+const char* sgp4_error_text(Sgp4Error e) noexcept;
+
+/// A TEME state; r and v are meaningful for kNone and kDecayed (the reference returns the
+/// state it computed before flagging decay), NaN otherwise.
+struct Sgp4State {
+  Sgp4Error error = Sgp4Error::kNone;
+  Eigen::Vector3d r_teme_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_teme_mps = Eigen::Vector3d::Zero();
+};
+
+/// Mean elements in the theory's units (radians, rad/min, 1/Earth radii).
+struct Sgp4Elements {
+  double epoch_days_1950 = 0.0;  ///< days since 1949 Dec 31 00:00 UTC (JD 2433281.5)
+  double bstar_per_er = 0.0;
+  double ecco = 0.0, inclo_rad = 0.0, nodeo_rad = 0.0, argpo_rad = 0.0, mo_rad = 0.0;
+  double no_kozai_radpmin = 0.0;
+};
+
+/// Converts catalog mean elements (degrees, rev/day) to the theory's units.
+Sgp4Elements sgp4_elements(const MeanElements& m) noexcept;
+
+class Sgp4Propagator {
+ public:
+  /// sgp4init. Never throws; a bad element set shows up in init_error() (the state at
+  /// epoch is evaluated once, as the reference does).
+  Sgp4Propagator(const Sgp4Elements& el, OperationMode mode,
+                 GravityModel gravity = GravityModel::kWgs72);
+  Sgp4Propagator(const MeanElements& m, OperationMode mode = OperationMode::kImproved,
+                 GravityModel gravity = GravityModel::kWgs72);
+
+  /// The error code at epoch (kNone when the element set initialised cleanly).
+  Sgp4Error init_error() const noexcept { return init_error_; }
+  bool deep_space() const noexcept { return deep_; }
+  /// State at tsince minutes from the element epoch. Thread-safe (const, no stored state).
+  Sgp4State propagate_min(double tsince_min) const noexcept;
+  /// State at t_s seconds from the element epoch.
+  Sgp4State propagate_s(double t_s) const noexcept { return propagate_min(t_s / 60.0); }
+
+ private:
+  struct Short {
+    double con41, x1mth2, x7thm1, aycof, xlcof;
+  };
+  void init_near_earth(double ao, double posq, double rteosq, double omeosq, double cosio,
+                       double sinio, double rp);
+  void init_drag_higher_order(double ao, double tsi, double sfour);
+  Short short_period(double sinip, double cosip) const noexcept;
+  Sgp4State position_velocity(const PerturbedElements& p, double am, double nm) const noexcept;
+
+  GravityConstants k_;
+  OperationMode mode_;
+  Sgp4Elements el_;
+  DeepSpaceEpoch ep_;  // epoch values and near-Earth secular rates
+  DeepSpaceTerms ds_;
+  bool deep_ = false;
+  bool isimp_ = false;
+  double no_unkozai_ = 0.0;
+  double cc1_ = 0, cc4_ = 0, cc5_ = 0, d2_ = 0, d3_ = 0, d4_ = 0, delmo_ = 0, eta_ = 0;
+  double omgcof_ = 0, sinmao_ = 0, t2cof_ = 0, t3cof_ = 0, t4cof_ = 0, t5cof_ = 0;
+  double xmcof_ = 0, nodecf_ = 0;
+  Short near_{};  // short-period coefficients at epoch inclination
+  Sgp4Error init_error_ = Sgp4Error::kNone;
+};
+
+/// Greenwich mean sidereal time (IAU-82, rad) at a UT1 Julian date, as the reference's gstime.
+double gmst_iau82_rad(double jd_ut1) noexcept;
+
+}  // namespace evade::sgp4

@@ -1,0 +1,90 @@
+// JSON "GP" element sets: the OMM keywords of CCSDS 502.0-B-2 as the keys of JSON objects
+// (RFC 8259), one object per element set, as catalogue providers publish them.
+#include "evade/sgp4/gp_json.hpp"
+
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "evade/sgp4/omm_record.hpp"
+
+namespace evade::sgp4 {
+namespace {
+
+struct Pos {
+  int line = 1, column = 1;
+};
+
+Pos position_of(const std::string& text, std::size_t offset) {
+  Pos p;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') ++p.line, p.column = 1;
+    else ++p.column;
+  }
+  return p;
+}
+
+// Offsets of the '{' of each object at depth 1 of a top-level array (or of the root object).
+std::vector<std::size_t> object_offsets(const std::string& text) {
+  std::vector<std::size_t> out;
+  int depth = 0;
+  bool in_string = false, escape = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (escape) escape = false;
+      else if (c == '\\') escape = true;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    else if (c == '{' || c == '[') {
+      if (c == '{' && (depth == 1 || (depth == 0 && out.empty()))) out.push_back(i);
+      ++depth;
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Catalog read_gp_json(const std::string& text, const std::string& source) {
+  Catalog cat;
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    const Pos p = position_of(text, e.byte > 0 ? e.byte - 1 : 0);
+    cat.issues.push_back({source, p.line, p.column, "well-formed JSON (" + std::string(e.what()) + ")", text.substr(e.byte > 0 ? e.byte - 1 : 0, 12)});
+    ++cat.bad_entries;
+    return cat;
+  }
+  const std::vector<std::size_t> offsets = object_offsets(text);
+  const nlohmann::json items = doc.is_array() ? doc : nlohmann::json::array({doc});
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Pos p = position_of(text, k < offsets.size() ? offsets[k] : 0);
+    const nlohmann::json& o = items[k];
+    if (!o.is_object()) {
+      cat.issues.push_back({source, p.line, p.column, "a JSON object per element set", o.dump().substr(0, 20)});
+      ++cat.bad_entries;
+      continue;
+    }
+    OmmRecord rec;
+    rec.line = p.line;
+    for (const auto& [key, v] : o.items()) {
+      if (!is_omm_keyword(key) || v.is_null()) continue;
+      const std::string t = v.is_string() ? v.get<std::string>() : v.dump();
+      rec.values[key] = OmmValue{t, p.line, p.column};
+    }
+    try {
+      cat.objects.push_back(mean_elements_from_omm(rec, source));
+    } catch (const ReadError& e) {
+      cat.issues.push_back(e.issue);
+      ++cat.bad_entries;
+    }
+  }
+  return cat;
+}
+
+}  // namespace evade::sgp4

@@ -1,0 +1,122 @@
+// Strict scalar parsing for the catalog readers (see internal/text_fields.hpp).
+#include "evade/sgp4/internal/text_fields.hpp"
+
+#include <cctype>
+#include <cstdlib>
+
+namespace evade::sgp4 {
+namespace {
+
+bool all_digits(const std::string& s) {
+  if (s.empty()) return false;
+  for (char c : s)
+    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+
+int cumulative_days(int year, int month) {
+  static const int kDays[12] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334};
+  const bool leap = year % 4 == 0 && (year % 100 != 0 || year % 400 == 0);
+  return kDays[month - 1] + (leap && month > 2 ? 1 : 0);
+}
+
+int month_length(int year, int month) {
+  static const int kLen[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  const bool leap = year % 4 == 0 && (year % 100 != 0 || year % 400 == 0);
+  return kLen[month - 1] + (leap && month == 2 ? 1 : 0);
+}
+
+}  // namespace
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+bool parse_plain_decimal(const std::string& field, double& out) {
+  const std::string t = trim(field);
+  std::size_t i = 0;
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  std::size_t digits = 0;
+  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++digits;
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++digits;
+  }
+  if (digits == 0) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    std::size_t ed = 0;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++ed;
+    if (ed == 0) return false;
+  }
+  if (i != t.size()) return false;
+  out = std::strtod(t.c_str(), nullptr);
+  return true;
+}
+
+bool parse_plain_integer(const std::string& field, long& out) {
+  std::string t = trim(field);
+  const bool neg = !t.empty() && t[0] == '-';
+  if (!t.empty() && (t[0] == '+' || t[0] == '-')) t = t.substr(1);
+  if (!all_digits(t) || t.size() > 12) return false;
+  out = std::atol(t.c_str()) * (neg ? -1 : 1);
+  return true;
+}
+
+bool parse_alpha5(const std::string& field, long& out) {
+  if (field.size() != 5) return false;
+  const char c = field[0];
+  if (std::isupper(static_cast<unsigned char>(c))) {
+    if (c == 'I' || c == 'O' || !all_digits(field.substr(1))) return false;
+    int v = c - 'A' + 10;
+    if (c > 'I') --v;
+    if (c > 'O') --v;
+    out = v * 10000L + std::atol(field.substr(1).c_str());
+    return true;
+  }
+  const std::string t = trim(field);
+  if (!all_digits(t) || field.back() == ' ') return false;
+  out = std::atol(t.c_str());
+  return true;
+}
+
+bool parse_iso_epoch(const std::string& text, int& year, double& day_of_year) {
+  std::string t = trim(text);
+  if (!t.empty() && t.back() == 'Z') t.pop_back();
+  const std::size_t tpos = t.find('T');
+  if (tpos == std::string::npos) return false;
+  const std::string date = t.substr(0, tpos), time = t.substr(tpos + 1);
+  int doy = 0;
+  if (date.size() == 10 && date[4] == '-' && date[7] == '-' && all_digits(date.substr(0, 4)) &&
+      all_digits(date.substr(5, 2)) && all_digits(date.substr(8, 2))) {
+    year = std::atoi(date.substr(0, 4).c_str());
+    const int month = std::atoi(date.substr(5, 2).c_str());
+    const int day = std::atoi(date.substr(8, 2).c_str());
+    if (month < 1 || month > 12 || day < 1 || day > month_length(year, month)) return false;
+    doy = cumulative_days(year, month) + day;
+  } else if (date.size() == 8 && date[4] == '-' && all_digits(date.substr(0, 4)) && all_digits(date.substr(5, 3))) {
+    year = std::atoi(date.substr(0, 4).c_str());
+    doy = std::atoi(date.substr(5, 3).c_str());
+    if (doy < 1 || doy > cumulative_days(year, 12) + 31) return false;
+  } else {
+    return false;
+  }
+  if (year < 1957 || year > 2099) return false;
+  if (time.size() < 8 || time[2] != ':' || time[5] != ':' || !all_digits(time.substr(0, 2)) ||
+      !all_digits(time.substr(3, 2)))
+    return false;
+  double sec = 0.0;
+  const std::string secs = time.substr(6);
+  if (!all_digits(secs.substr(0, 2)) || !parse_plain_decimal(secs, sec) || secs.find_first_of("eE+-") != std::string::npos)
+    return false;
+  const int hh = std::atoi(time.substr(0, 2).c_str()), mm = std::atoi(time.substr(3, 2).c_str());
+  if (hh > 23 || mm > 59 || !(sec >= 0.0 && sec < 60.0)) return false;
+  day_of_year = doy + (hh * 3600.0 + mm * 60.0 + sec) / 86400.0;
+  return true;
+}
+
+}  // namespace evade::sgp4
