@@ -7,6 +7,7 @@
 //   evade sim --scenario seed0 --accel 1 --detect 10 --json
 //   evade sim --scenario seed0 --noise-rad 50e-6 --no-rates --runs 200 --seed 7 --json
 //   evade sim --scenario seed0 --csv run.csv --plot run.png
+//   evade sim --scenario seed0 --lcm URL --realtime --json   (node at its own fixed rate)
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -23,8 +24,10 @@
 
 #include "cli.hpp"
 #include "evade/guidance/guidance_law.hpp"
+#include "evade/lcm_link/realtime_lcm_link.hpp"
 #include "evade/lcm_link/sim_lcm_endpoint.hpp"
 #include "evade/sim/monte_carlo.hpp"
+#include "evade/sim/realtime_simulator.hpp"
 #include "evade/sim/sim_csv.hpp"
 #include "evade/sim/sim_overrides.hpp"
 #include "evade/sim/simulator.hpp"
@@ -52,6 +55,7 @@ struct SimOptions {
   std::string lcm_url;
   bool lockstep = true;
   double lcm_timeout_s = 5.0;
+  bool realtime = false;
 };
 
 std::string num(double v) {
@@ -104,6 +108,10 @@ void check_run_options(const SimOptions& o) {
     throw std::invalid_argument("--lcm-timeout-s = " + num(o.lcm_timeout_s) +
                                 " outside (0, 3600]");
   }
+  if (o.realtime && o.lcm_url.empty()) {
+    throw std::invalid_argument("--realtime needs --lcm URL (a node running at its own rate)");
+  }
+  if (o.realtime && o.runs > 0) throw std::invalid_argument("--runs cannot be combined with --realtime");
   if (!o.plot.empty() && o.csv.empty()) {
     throw std::invalid_argument("--plot needs --csv FILE (the plot is drawn from the CSV)");
   }
@@ -117,20 +125,46 @@ std::unique_ptr<sim::GuidanceEndpoint> make_endpoint(const SimOptions& o,
   return sim::make_in_process_endpoint(cfg.guidance, cfg.guidance.armed);
 }
 
-// One run, its time history written to --csv when given.
+// --csv: the file opened with its header (closed when csv goes out of scope).
+sim::SampleCallback csv_writer(const SimOptions& o, std::ofstream& csv) {
+  if (o.csv.empty()) return {};
+  csv.open(o.csv);
+  if (!csv) throw std::invalid_argument("--csv = " + o.csv + ": cannot open for writing");
+  csv << sim::sim_csv_header() << '\n';
+  return [&csv](const sim::SimSample& s) { sim::write_sim_csv_row(csv, s); };
+}
+
+// One run (lockstep or in-process), its time history written to --csv when given.
 sim::SimResult simulate(const SimOptions& o, const sim::SimConfig& cfg,
                         sim::GuidanceEndpoint& endpoint) {
   std::ofstream csv;
-  if (!o.csv.empty()) {
-    csv.open(o.csv);
-    if (!csv) throw std::invalid_argument("--csv = " + o.csv + ": cannot open for writing");
-    csv << sim::sim_csv_header() << '\n';
+  return sim::run_simulation(cfg, endpoint, csv_writer(o, csv));
+}
+
+// --realtime: truth at wall-clock pace against a node at its own fixed rate.
+sim::RealtimeResult simulate_realtime(const SimOptions& o, const sim::SimConfig& cfg) {
+  const std::unique_ptr<sim::RealtimeLink> link = lcm_link::make_realtime_lcm_link(o.lcm_url);
+  std::ofstream csv;
+  const sim::RealtimeResult r = sim::run_realtime_simulation(cfg, *link, csv_writer(o, csv));
+  if (r.late_steps > 0) {
+    std::fprintf(stderr,
+                 "evade sim: fell behind the wall clock in %ld of %ld steps (by more than "
+                 "realtime.late_tolerance_s = %g s; worst %.3f ms); time was not slowed\n",
+                 r.late_steps, r.steps, cfg.realtime.late_tolerance_s, r.late_max_ms);
   }
-  sim::SampleCallback cb;
-  if (csv.is_open()) cb = [&csv](const sim::SimSample& s) { sim::write_sim_csv_row(csv, s); };
-  const sim::SimResult r = sim::run_simulation(cfg, endpoint, cb);
-  if (csv.is_open()) csv.close();
   return r;
+}
+
+void add_realtime(const sim::RealtimeResult& r, nlohmann::json* j) {
+  (*j)["guidance"] = "lcm_realtime";
+  (*j)["command_age_ms_p50"] = r.command_age_ms_p50;
+  (*j)["command_age_ms_p99"] = r.command_age_ms_p99;
+  (*j)["command_age_ms_max"] = r.command_age_ms_max;
+  (*j)["commands_received"] = r.commands_received;
+  (*j)["sim_steps"] = r.steps;
+  (*j)["sim_late_steps"] = r.late_steps;
+  (*j)["sim_late_max_ms"] = r.late_max_ms;
+  (*j)["start_utime_us"] = r.start_utime_us;
 }
 
 nlohmann::json result_json(const SimOptions& o, const sim::SimResult& r,
@@ -242,13 +276,20 @@ int run_sim(const SimOptions& o) {
   check_run_options(o);
   const sim::SimConfig cfg = sim::read_sim_config(sc);
 
-  const std::unique_ptr<sim::GuidanceEndpoint> endpoint = make_endpoint(o, cfg);
-  const sim::SimResult r = simulate(o, cfg, *endpoint);
+  std::optional<sim::RealtimeResult> rt;
+  sim::SimResult r;
+  if (o.realtime) {
+    rt = simulate_realtime(o, cfg);
+    r = rt->sim;
+  } else {
+    r = simulate(o, cfg, *make_endpoint(o, cfg));
+  }
   if (!r.closest_approach_found) {
     std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.encounter.max_duration_s);
     return 1;
   }
   nlohmann::json j = result_json(o, r, cfg, sc);
+  if (rt) add_realtime(*rt, &j);
   if (o.runs > 0) add_monte_carlo(o, cfg, &j);
   j["scenario_used"] = sc.used();
   if (!o.plot.empty() && !draw_plot(o)) return 1;
@@ -287,6 +328,9 @@ const bool kRegistered = evade::cli::register_command(
           ->capture_default_str();
       app.add_option("--lcm-timeout-s", o->lcm_timeout_s, "LCM reply timeout [s]")
           ->capture_default_str();
+      app.add_flag("--realtime", o->realtime,
+                   "with --lcm: truth at wall-clock pace, the node at its own fixed rate "
+                   "(no lockstep); adds command_age_ms_* and sim_late_steps");
       return [o]() { return run_sim(*o); };
     });
 

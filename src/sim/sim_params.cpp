@@ -40,6 +40,9 @@ const Param<C> kRows[] = {
     EVADE_PARAM_REAL(C, actuator.latency_s, "s", 0.0, 10.0, false,
                      "delay from a command to its thrust"),
     EVADE_PARAM_SEED(C, actuator.seed, "seed of the actuator's random numbers"),
+    EVADE_PARAM_REAL(C, realtime.late_tolerance_s, "s", 1e-6, 1.0, false,
+                     "real-time runs: a step processed later than this after its wall-clock "
+                     "time counts as late (sim_late_steps)"),
     EVADE_PARAM_REAL(C, integrator.rel_tol, "-", 1e-15, 1e-3, false,
                      "relative tolerance of the truth integrator (DOP853)"),
     EVADE_PARAM_REAL(C, integrator.abs_tol, "m", 1e-15, 1.0, false,

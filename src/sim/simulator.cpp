@@ -20,6 +20,7 @@
 #include "evade/guidance/los_geometry.hpp"
 #include "evade/sim/actuator_model.hpp"
 #include "evade/sim/sensor_model.hpp"
+#include "evade/sim/truth_sample.hpp"
 
 namespace evade::sim {
 
@@ -134,27 +135,6 @@ SimResult nominal_start(const SimConfig& cfg) {
   res.nominal_miss_m = enc.miss_m;
   res.start_s = enc.tca_s - cfg.encounter.detect_before_tca_s;
   return res;
-}
-
-// Truth geometry of one history row (range, range rate, true LOS rate and e_θ).
-SimSample truth_sample(double t_s, const Vec12& x) {
-  SimSample s;
-  s.t_s = t_s;
-  s.satellite = sat_of(x);
-  s.debris = deb_of(x);
-  const Vec3 rr = s.debris.r_eci_m - s.satellite.r_eci_m;
-  const Vec3 rv = s.debris.v_eci_mps - s.satellite.v_eci_mps;
-  s.range_m = rr.norm();
-  s.range_rate_mps = rr.dot(rv) / s.range_m;
-  Vec3 u;
-  Vec3 ud;
-  guidance::los_from_relative(rr, rv, &u, &ud);
-  guidance::LosFrame fr;
-  if (guidance::los_frame(u, ud, s.satellite.r_eci_m, s.satellite.v_eci_mps, 0.0, &fr)) {
-    s.los_rate_true_radps = fr.los_rate_radps;
-    s.e_theta_true_eci = fr.e_theta_eci;
-  }
-  return s;
 }
 
 // One closed-loop run from the start instant: per guidance cycle, deliver the newest
@@ -299,7 +279,7 @@ void ClosedLoop::apply_due_accel(std::int64_t utime) {
 void ClosedLoop::report(double t_k, const guidance::AnglesMeasurement* meas,
                         const guidance::ThrustCommand& cmd) {
   if (!on_sample_) return;
-  SimSample s = truth_sample(t_k, x_);
+  SimSample s = truth_sample(t_k, sat_of(x_), deb_of(x_));
   s.has_measurement = (meas != nullptr);
   if (meas != nullptr) s.meas = *meas;
   s.cmd = cmd;

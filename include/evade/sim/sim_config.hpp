@@ -53,6 +53,12 @@ struct EncounterConfig {
   double max_duration_s = 3600.0;     ///< give up (no closest approach) after this long
 };
 
+/// Real-time runs (`evade sim --lcm URL --realtime`, realtime_simulator.hpp): truth at
+/// wall-clock pace; a step whose outputs leave later than this after its due time is late.
+struct RealtimeConfig {
+  double late_tolerance_s = 1e-3;  ///< lateness above which a step counts in sim_late_steps
+};
+
 struct SimConfig {
   StateEci satellite0;  ///< at the epoch (t = 0)
   StateEci debris0;     ///< at the epoch (t = 0)
@@ -62,6 +68,7 @@ struct SimConfig {
   guidance::GuidanceConfig guidance;  ///< guidance.rate_hz is also the exchange rate
   SensorConfig sensor;
   ActuatorConfig actuator;
+  RealtimeConfig realtime;
   AdaptiveOptions integrator = AdaptiveOptions::tight();
 
   /// Throws std::invalid_argument with the parameter tables' error text.
