@@ -10,7 +10,14 @@
 namespace evade::guidance_lcm {
 namespace {
 
+using guidance::PlanFrame;
+using guidance::PlanReject;
+
 constexpr int kObservabilitySource = static_cast<int>(PlanSource::kObservability);
+constexpr int kMax = BurnPlan::kMaxImpulses;
+static_assert(kMax == evade_burn_plan_t::MAX_IMPULSES, "message capacity = BurnPlan's");
+static_assert(static_cast<int>(PlanFrame::kRsw) == evade_burn_plan_t::FRAME_RSW, "frame code");
+static_assert(static_cast<int>(PlanFrame::kEci) == evade_burn_plan_t::FRAME_ECI, "frame code");
 
 bool known_source(int s) noexcept {
   return s == static_cast<int>(PlanSource::kUnknown) ||
@@ -42,18 +49,21 @@ void require_finite(const std::string& field, const Vec3& v) {
     bad(field, "= [" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]: must be finite");
 }
 
-void check_impulses(const BurnPlan& p) {
-  if (p.n_impulses < 0 || p.n_impulses > BurnPlan::kMaxImpulses)
-    bad("n_impulses", "= " + std::to_string(p.n_impulses) + ": must be in [0, " +
-                          std::to_string(BurnPlan::kMaxImpulses) + "]");
-  if (p.n_impulses != 1)
-    bad("n_impulses", "= " + std::to_string(p.n_impulses) +
-                          ": evade_burn_plan_t carries exactly one impulse (a plan is never "
-                          "published in part)");
-  const ImpulsiveBurn& b = p.impulses[0];
-  require_finite("impulses[0].t_s", b.t_s);
-  require_finite("impulses[0].dv_rsw_mps", b.dv_rsw_mps);
-  if (b.dv_eci_valid) require_finite("impulses[0].dv_eci_mps", b.dv_eci_mps);
+void check_impulses(const BurnPlan& p, PlanFrame frame) {
+  if (p.n_impulses < 1 || p.n_impulses > kMax)
+    bad("n_impulses", "= " + std::to_string(p.n_impulses) + ": must be in [1, " +
+                          std::to_string(kMax) + "]");
+  for (int k = 0; k < p.n_impulses; ++k) {
+    const ImpulsiveBurn& b = p.impulses[static_cast<std::size_t>(k)];
+    const std::string at = "impulses[" + std::to_string(k) + "].";
+    require_finite(at + "t_s", b.t_s);
+    require_finite(at + "dv_rsw_mps", b.dv_rsw_mps);
+    if (b.dv_eci_valid) require_finite(at + "dv_eci_mps", b.dv_eci_mps);
+    if (frame == PlanFrame::kEci && !b.dv_eci_valid)
+      bad(at + "dv_eci_valid", "= false: frame ECI needs every impulse's ECI delta-v");
+  }
+  if (frame != PlanFrame::kRsw && frame != PlanFrame::kEci)
+    bad("frame", "= " + std::to_string(static_cast<int>(frame)) + ": allowed 0 RSW, 1 ECI");
 }
 
 void check_source(const BurnPlan& p) {
@@ -77,23 +87,83 @@ void check_source(const BurnPlan& p) {
     bad("observability.evaluations", "= " + std::to_string(o.evaluations) + ": must be >= 0");
 }
 
+struct Verdict {
+  PlanReject reject;
+  const char* why;
+};
+
+Verdict impulses_verdict(const evade_burn_plan_t& m) noexcept {
+  if (m.n_impulses < 1 || m.n_impulses > kMax)
+    return {PlanReject::kImpulseCount, "evade_burn_plan_t.n_impulses: must be in [1, 8]"};
+  for (int k = 0; k < m.n_impulses; ++k) {
+    if (m.impulse_dv_eci_valid[k] != 0 && m.impulse_dv_eci_valid[k] != 1)
+      return {PlanReject::kMalformed, "evade_burn_plan_t.impulse_dv_eci_valid: must be 0 or 1"};
+    if (!std::isfinite(m.impulse_t_s[k]))
+      return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_t_s: not finite"};
+    if (!finite3(m.impulse_dv_rsw_mps[k]))
+      return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_dv_rsw_mps: not finite"};
+    if (m.impulse_dv_eci_valid[k] == 1 && !finite3(m.impulse_dv_eci_mps[k]))
+      return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_dv_eci_mps: not finite"};
+    if (!std::isfinite(m.impulse_dv_mps[k]))
+      return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_dv_mps: not finite"};
+    if (m.frame == evade_burn_plan_t::FRAME_ECI && m.impulse_dv_eci_valid[k] != 1)
+      return {PlanReject::kUnknownFrame,
+              "evade_burn_plan_t.frame: FRAME_ECI needs every impulse_dv_eci_valid = 1"};
+  }
+  if (m.frame != evade_burn_plan_t::FRAME_RSW && m.frame != evade_burn_plan_t::FRAME_ECI)
+    return {PlanReject::kUnknownFrame, "evade_burn_plan_t.frame: allowed 0 RSW, 1 ECI"};
+  return {PlanReject::kNone, nullptr};
+}
+
+Verdict source_verdict(const evade_burn_plan_t& m) noexcept {
+  if (!known_source(m.source))
+    return {PlanReject::kMalformed,
+            "evade_burn_plan_t.source: unknown planner code (allowed 0, 1, 3, 4)"};
+  if (m.source != kObservabilitySource) return {PlanReject::kNone, nullptr};
+  if (!known_objective(m.objective))
+    return {PlanReject::kMalformed,
+            "evade_burn_plan_t.objective: allowed 0 paper, 1 los-change, 2 estimation"};
+  if (!std::isfinite(m.eps_rad) || !std::isfinite(m.theta_rad))
+    return {PlanReject::kNotFinite, "evade_burn_plan_t.eps_rad/theta_rad: not finite"};
+  if (!std::isfinite(m.objective_value))
+    return {PlanReject::kNotFinite, "evade_burn_plan_t.objective_value: not finite"};
+  if (m.evaluations < 0)
+    return {PlanReject::kMalformed, "evade_burn_plan_t.evaluations: must be >= 0"};
+  return {PlanReject::kNone, nullptr};
+}
+
+Verdict message_verdict(const evade_burn_plan_t& m) noexcept {
+  const Verdict v = impulses_verdict(m);
+  return v.reject != PlanReject::kNone ? v : source_verdict(m);
+}
+
+void copy_impulses(const BurnPlan& plan, evade_burn_plan_t* m) {
+  for (int k = 0; k < plan.n_impulses; ++k) {
+    const ImpulsiveBurn& b = plan.impulses[static_cast<std::size_t>(k)];
+    m->impulse_t_s[k] = b.t_s;
+    for (int i = 0; i < 3; ++i) {
+      m->impulse_dv_rsw_mps[k][i] = b.dv_rsw_mps(i);
+      m->impulse_dv_eci_mps[k][i] = b.dv_eci_valid ? b.dv_eci_mps(i) : 0.0;
+    }
+    m->impulse_dv_eci_valid[k] = b.dv_eci_valid ? 1 : 0;
+    m->impulse_dv_mps[k] = b.dv_rsw_mps.norm();
+  }
+}
+
 }  // namespace
 
-void to_lcm(const BurnPlan& plan, std::int64_t utime, std::int64_t seq, evade_burn_plan_t* out) {
-  check_impulses(plan);
+void to_lcm(const BurnPlan& plan, std::int64_t utime, std::int64_t seq, std::int64_t epoch_utime,
+            guidance::PlanFrame frame, evade_burn_plan_t* out) {
+  check_impulses(plan, frame);
   check_source(plan);
-  const ImpulsiveBurn& b = plan.impulses[0];
   const ObservabilityPlanInfo& o = plan.observability;
   evade_burn_plan_t m{};
   m.utime = utime;
   m.seq = seq;
-  m.burn_time_s = b.t_s;
-  for (int i = 0; i < 3; ++i) {
-    m.dv_lvlh_mps[i] = b.dv_rsw_mps(i);
-    m.dv_eci_mps[i] = b.dv_eci_valid ? b.dv_eci_mps(i) : 0.0;
-  }
-  m.dv_eci_valid = b.dv_eci_valid ? 1 : 0;
-  m.dv_mps = b.dv_rsw_mps.norm();
+  m.epoch_utime = epoch_utime;
+  m.frame = static_cast<std::int8_t>(frame);
+  m.n_impulses = static_cast<std::int8_t>(plan.n_impulses);
+  copy_impulses(plan, &m);
   if (o.valid) {
     m.eps_rad = o.eps_rad;
     m.theta_rad = o.theta_rad;
@@ -105,36 +175,32 @@ void to_lcm(const BurnPlan& plan, std::int64_t utime, std::int64_t seq, evade_bu
   *out = m;
 }
 
+void to_lcm(const BurnPlan& plan, std::int64_t utime, std::int64_t seq, evade_burn_plan_t* out) {
+  to_lcm(plan, utime, seq, utime, guidance::PlanFrame::kRsw, out);
+}
+
 const char* burn_plan_message_error(const evade_burn_plan_t& m) noexcept {
-  if (m.dv_eci_valid != 0 && m.dv_eci_valid != 1)
-    return "evade_burn_plan_t.dv_eci_valid: must be 0 or 1";
-  if (!std::isfinite(m.burn_time_s)) return "evade_burn_plan_t.burn_time_s: not finite";
-  if (!finite3(m.dv_lvlh_mps)) return "evade_burn_plan_t.dv_lvlh_mps: not finite";
-  if (m.dv_eci_valid == 1 && !finite3(m.dv_eci_mps))
-    return "evade_burn_plan_t.dv_eci_mps: not finite";
-  if (!std::isfinite(m.dv_mps)) return "evade_burn_plan_t.dv_mps: not finite";
-  if (!known_source(m.source))
-    return "evade_burn_plan_t.source: unknown planner code (allowed 0, 1, 3, 4)";
-  if (m.source != kObservabilitySource) return nullptr;
-  if (!known_objective(m.objective))
-    return "evade_burn_plan_t.objective: allowed 0 paper, 1 los-change, 2 estimation";
-  if (!std::isfinite(m.eps_rad) || !std::isfinite(m.theta_rad))
-    return "evade_burn_plan_t.eps_rad/theta_rad: not finite";
-  if (!std::isfinite(m.objective_value)) return "evade_burn_plan_t.objective_value: not finite";
-  if (m.evaluations < 0) return "evade_burn_plan_t.evaluations: must be >= 0";
-  return nullptr;
+  return message_verdict(m).why;
+}
+
+guidance::PlanReject burn_plan_message_reject(const evade_burn_plan_t& m) noexcept {
+  return message_verdict(m).reject;
 }
 
 bool from_lcm(const evade_burn_plan_t& m, BurnPlan* out) noexcept {
   if (burn_plan_message_error(m) != nullptr) return false;
   BurnPlan p;
   p.plan_id = m.seq;
-  p.n_impulses = 1;
-  ImpulsiveBurn& b = p.impulses[0];
-  b.t_s = m.burn_time_s;
-  b.dv_rsw_mps = Vec3(m.dv_lvlh_mps[0], m.dv_lvlh_mps[1], m.dv_lvlh_mps[2]);
-  b.dv_eci_valid = m.dv_eci_valid == 1;
-  b.dv_eci_mps = Vec3(m.dv_eci_mps[0], m.dv_eci_mps[1], m.dv_eci_mps[2]);
+  p.n_impulses = m.n_impulses;
+  for (int k = 0; k < m.n_impulses; ++k) {
+    ImpulsiveBurn& b = p.impulses[static_cast<std::size_t>(k)];
+    b.t_s = m.impulse_t_s[k];
+    const double* r = m.impulse_dv_rsw_mps[k];
+    const double* e = m.impulse_dv_eci_mps[k];
+    b.dv_rsw_mps = Vec3(r[0], r[1], r[2]);
+    b.dv_eci_valid = m.impulse_dv_eci_valid[k] == 1;
+    b.dv_eci_mps = Vec3(e[0], e[1], e[2]);
+  }
   p.source = m.source;
   if (m.source == kObservabilitySource) {
     ObservabilityPlanInfo& o = p.observability;
@@ -146,6 +212,13 @@ bool from_lcm(const evade_burn_plan_t& m, BurnPlan* out) noexcept {
     o.evaluations = m.evaluations;
   }
   *out = p;
+  return true;
+}
+
+bool from_lcm(const evade_burn_plan_t& m, guidance::UplinkedPlan* out) noexcept {
+  if (!from_lcm(m, &out->plan)) return false;
+  out->epoch_utime_us = m.epoch_utime;
+  out->frame = static_cast<guidance::PlanFrame>(m.frame);
   return true;
 }
 

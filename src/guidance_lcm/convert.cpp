@@ -110,4 +110,25 @@ void to_lcm(const guidance::GuidanceStatus& s, evade_guidance_status_t* out) noe
   out->dv_used_mps = s.dv_used_mps;
 }
 
+void to_lcm(const guidance::PlanExecStatus& s, evade_guidance_status_t* out) noexcept {
+  static_assert(static_cast<int>(guidance::PlanReject::kCount) == 12, "plan_n_rejected[12]");
+  static_assert(BurnPlan::kMaxImpulses == 8, "plan_dv_delivered_mps[8]");
+  out->plan_id = s.plan_id;
+  out->plan_state = static_cast<std::int8_t>(s.state);
+  out->plan_end = static_cast<std::int8_t>(s.end);
+  out->plan_n_impulses = static_cast<std::int8_t>(s.n_impulses);
+  out->plan_impulses_done = static_cast<std::int8_t>(s.impulses_done);
+  for (int k = 0; k < BurnPlan::kMaxImpulses; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    out->plan_dv_delivered_mps[k] = s.dv_delivered_mps[i];
+    out->plan_burn_start_utime[k] = s.burn_start_us[i];
+    out->plan_burn_end_utime[k] = s.burn_end_us[i];
+  }
+  out->plan_dv_total_mps = s.dv_total_mps;
+  out->plan_n_accepted = s.accepted;
+  out->plan_last_reject = static_cast<std::int8_t>(s.last_reject);
+  for (int r = 0; r < static_cast<int>(guidance::PlanReject::kCount); ++r)
+    out->plan_n_rejected[r] = s.rejected[static_cast<std::size_t>(r)];
+}
+
 }  // namespace evade::guidance_lcm

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "evade/guidance_lcm/burn_plan_convert.hpp"
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/convert.hpp"
 #include "evade/guidance_lcm/node_params.hpp"
@@ -44,6 +45,7 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
       seq_{SeqTracker(cfg.max_seq_jump), SeqTracker(cfg.max_seq_jump),
            SeqTracker(cfg.max_seq_jump)},
       armed_(cfg.guidance.armed),
+      plan_exec_(guidance::PlanExecutorConfig::from(cfg.guidance)),
       cmd_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmd),
       status_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanStatus) {
   if (lcm_ == nullptr) throw std::invalid_argument("GuidanceNode: lcm is null");
@@ -63,6 +65,9 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
       throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + kChanClock);
     lcm_subscription_set_queue_capacity(clock_sub_, 10000);
   }
+  plan_sub_ = lcm_subscribe(lcm_, kChanPlan, &GuidanceNode::on_plan, this);
+  if (plan_sub_ == nullptr)
+    throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + kChanPlan);
   input_.armed = armed_;
 }
 
@@ -70,6 +75,7 @@ GuidanceNode::~GuidanceNode() {
   for (auto* s : subs_)
     if (s != nullptr) lcm_unsubscribe(lcm_, s);
   if (clock_sub_ != nullptr) lcm_unsubscribe(lcm_, clock_sub_);
+  if (plan_sub_ != nullptr) lcm_unsubscribe(lcm_, plan_sub_);
 }
 
 void GuidanceNode::on_input(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
@@ -103,6 +109,52 @@ void GuidanceNode::on_clock(const lcm_recv_buf_t* rbuf, const char*, void* user)
   if (self->tick_pending_) ++self->ticks_missed_;  // previous tick never got its cycle
   self->tick_pending_ = true;
   self->tick_utime_ = tick.utime;
+}
+
+// EVADE_BURN_PLAN (PLAN-IN-1): counted like every input; bytes into the plan inbox.
+void GuidanceNode::on_plan(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
+  auto* self = static_cast<GuidanceNode*>(user);
+  ++self->counts_.received;
+  if (rbuf->data_size > kMaxPlanBytes) {
+    self->counts_.add(Verdict::kRejected, Reason::kOversize);
+    return;
+  }
+  if (!self->plan_inbox_.push(rbuf->data, rbuf->data_size)) self->counts_.add(Verdict::kDropped);
+}
+
+// One plan message: decode, time and field checks, then the executor's validation. Every
+// message ends consumed (accepted), rejected or stale (plan id not newer).
+void GuidanceNode::admit_plan(const PlanInbox::Slot& raw, std::int64_t now_us) noexcept {
+  const int n = plan_msg_.decode(raw.data.data(), 0, static_cast<int>(raw.size));
+  if (n < 0 || n != static_cast<int>(raw.size)) {
+    counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
+    return;
+  }
+  if (plan_msg_.utime > now_us + future_us_) {
+    counts_.add(Verdict::kRejected, Reason::kFromFuture);
+    return;
+  }
+  guidance::PlanReject r = burn_plan_message_reject(plan_msg_);
+  if (r != guidance::PlanReject::kNone) {
+    plan_exec_.count_rejection(r);
+  } else if (from_lcm(plan_msg_, &plan_)) {
+    r = plan_exec_.load(plan_, now_us, armed_, law_.status().dv_used_mps);
+  }
+  if (r == guidance::PlanReject::kNone) {
+    counts_.add(Verdict::kConsumed);
+  } else if (r == guidance::PlanReject::kNotNewer) {
+    counts_.add(Verdict::kStale, Reason::kOutOfOrderSeq);
+  } else {
+    counts_.add(Verdict::kRejected, r == guidance::PlanReject::kNotFinite ? Reason::kNotFinite
+                                                                          : Reason::kOutOfRange);
+  }
+}
+
+void GuidanceNode::process_plans(std::int64_t now_us) noexcept {
+  while (!plan_inbox_.empty()) {
+    admit_plan(plan_inbox_.front(), now_us);
+    plan_inbox_.pop();
+  }
 }
 
 int GuidanceNode::drain() noexcept {
@@ -226,12 +278,15 @@ void GuidanceNode::process_queue(std::int64_t now_us) noexcept {
 
 const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept {
   process_queue(now_us);
+  process_plans(now_us);
   // Watchdog (NODE-WD-1): the newest valid measurement received is older than the stale
   // limit. Its verdict is an input of the law, which then commands SAFE and counts it.
   const bool silent = have_angles_ && now_us - last_angles_utime_ > stale_us_;
   input_.watchdog = silent ? guidance::WatchdogVerdict::kInputSilent
                            : guidance::WatchdogVerdict::kAlive;
   guidance::ThrustCommand cmd = law_.step(input_, now_us);
+  // Uplinked plan (PLAN-EXE-1): flies only when the law does not thrust (EVADE pre-empts it).
+  cmd = guidance::merge_plan_thrust(cmd, plan_exec_.step(input_.nav, armed_, cmd.mode, now_us));
   cmd.utime_us = now_us;
   to_lcm(cmd, ++cmd_seq_, have_angles_ ? last_angles_utime_ : -1, &cmd_msg_);
   cmd_pub_.publish(cmd_msg_);
@@ -255,6 +310,7 @@ const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept 
     status_msg_.cycle_p50_us = compute_.quantile(0.50);
     status_msg_.cycle_p99_us = compute_.quantile(0.99);
     status_msg_.cycle_max_us = compute_.max_us();
+    to_lcm(plan_exec_.status(), &status_msg_);
     status_pub_.publish(status_msg_);
   }
   return cmd_msg_;

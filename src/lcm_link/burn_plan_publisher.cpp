@@ -21,12 +21,13 @@ std::int64_t wall_clock_us() {
 }  // namespace
 
 std::int64_t publish_burn_plan(lcm_t* lcm, const std::string& channel, const BurnPlan& plan,
-                               std::int64_t seq) {
+                               std::int64_t seq, const PlanStamp& stamp) {
   if (lcm == nullptr) throw std::invalid_argument("publish_burn_plan: lcm is null");
   if (channel.empty()) throw std::invalid_argument("publish_burn_plan: channel is empty");
-  const std::int64_t utime = wall_clock_us();
+  const std::int64_t utime = stamp.utime != 0 ? stamp.utime : wall_clock_us();
+  const std::int64_t epoch = stamp.epoch_utime != 0 ? stamp.epoch_utime : utime;
   evade_burn_plan_t m{};
-  guidance_lcm::to_lcm(plan, utime, seq, &m);
+  guidance_lcm::to_lcm(plan, utime, seq, epoch, stamp.frame, &m);
   std::vector<std::uint8_t> buf(static_cast<std::size_t>(m.getEncodedSize()));
   const int n = m.encode(buf.data(), 0, static_cast<int>(buf.size()));
   if (n < 0)
@@ -37,13 +38,18 @@ std::int64_t publish_burn_plan(lcm_t* lcm, const std::string& channel, const Bur
   return utime;
 }
 
+std::int64_t publish_burn_plan(lcm_t* lcm, const std::string& channel, const BurnPlan& plan,
+                               std::int64_t seq) {
+  return publish_burn_plan(lcm, channel, plan, seq, PlanStamp{});
+}
+
 std::int64_t publish_burn_plan(const std::string& lcm_url, const std::string& channel,
-                               const BurnPlan& plan, std::int64_t seq) {
+                               const BurnPlan& plan, std::int64_t seq, const PlanStamp& stamp) {
   std::unique_ptr<lcm_t, void (*)(lcm_t*)> lcm(
       lcm_create(lcm_url.empty() ? nullptr : lcm_url.c_str()), &lcm_destroy);
   if (lcm == nullptr)
     throw std::runtime_error("LCM initialization failed for url '" + lcm_url + "'");
-  return publish_burn_plan(lcm.get(), channel, plan, seq);
+  return publish_burn_plan(lcm.get(), channel, plan, seq, stamp);
 }
 
 }  // namespace evade::lcm_link

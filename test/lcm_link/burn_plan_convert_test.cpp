@@ -1,6 +1,7 @@
 // BurnPlan <-> evade_burn_plan_t (guidance_lcm/burn_plan_convert.hpp): a bit-exact round trip
-// (through the encoded bytes too), refusal of plans the single-impulse message cannot carry,
-// and rejection of malformed messages on the receiving side.
+// (through the encoded bytes too) for one and for kMaxImpulses impulses with the epoch and the
+// frame, refusal of plans the message cannot carry, and rejection of malformed messages on the
+// receiving side with the executor's reason (docs/GUIDANCE_NODE.md PLAN-IF-1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -139,20 +140,36 @@ TEST(BurnPlanConvert, MessageFieldsFollowThePlanAndTheMessageCodes) {
   to_lcm(p, 5, 6, &m);
   EXPECT_EQ(m.source, evade::evade_burn_plan_t::SOURCE_OBSERVABILITY_ISRES);
   EXPECT_EQ(m.objective, evade::evade_burn_plan_t::OBJECTIVE_ESTIMATION);
-  EXPECT_EQ(m.dv_eci_valid, 0);
-  for (int i = 0; i < 3; ++i) EXPECT_EQ(m.dv_eci_mps[i], 0.0);
-  EXPECT_EQ(bits(m.dv_mps), bits(p.impulses[0].dv_rsw_mps.norm()));
-  EXPECT_EQ(bits(m.burn_time_s), bits(0.1));
+  EXPECT_EQ(m.impulse_dv_eci_valid[0], 0);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(m.impulse_dv_eci_mps[0][i], 0.0);
+  EXPECT_EQ(bits(m.impulse_dv_mps[0]), bits(p.impulses[0].dv_rsw_mps.norm()));
+  EXPECT_EQ(bits(m.impulse_t_s[0]), bits(0.1));
+  EXPECT_EQ(m.n_impulses, 1);
+  EXPECT_EQ(m.epoch_utime, 5);  // default: the publication time
+  EXPECT_EQ(m.frame, evade::evade_burn_plan_t::FRAME_RSW);
+  for (int k = 1; k < BurnPlan::kMaxImpulses; ++k) EXPECT_EQ(m.impulse_t_s[k], 0.0) << k;
 }
 
-TEST(BurnPlanConvert, TwoImpulsePlanIsRefusedNamingTheField) {
-  BurnPlan p = observability_plan();
-  p.n_impulses = 2;
-  p.impulses[1].t_s = 600.0;
-  p.impulses[1].dv_rsw_mps = Vec3(0.0, 0.5, 0.0);
-  const std::string why = refusal(p);
-  EXPECT_NE(why.find("BurnPlan.n_impulses = 2"), std::string::npos) << why;
-  EXPECT_NE(why.find("exactly one impulse"), std::string::npos) << why;
+TEST(BurnPlanConvert, FullPlanWithEpochAndFrameRoundTripsBitExact) {
+  BurnPlan p = formation_plan_with_eci();
+  p.n_impulses = BurnPlan::kMaxImpulses;
+  for (int k = 1; k < BurnPlan::kMaxImpulses; ++k) {
+    auto& b = p.impulses[static_cast<std::size_t>(k)];
+    b.t_s = 5400.000000000001 + 1000.0 * k + 1.0 / 3.0;
+    b.dv_rsw_mps = Vec3(1e-3 * k, -0.1 / k, std::nextafter(0.0, 1.0));
+    b.dv_eci_valid = true;
+    b.dv_eci_mps = Vec3(-1e-3 * k, 0.1 / k, -std::nextafter(0.0, 1.0));
+  }
+  evade::evade_burn_plan_t m{};
+  to_lcm(p, 7, p.plan_id, 1700000000000001LL, evade::guidance::PlanFrame::kEci, &m);
+  evade::guidance::UplinkedPlan q;
+  ASSERT_TRUE(from_lcm(through_bytes(m), &q));
+  expect_identical(p, q.plan);
+  EXPECT_EQ(q.epoch_utime_us, 1700000000000001LL);
+  EXPECT_EQ(q.frame, evade::guidance::PlanFrame::kEci);
+  // ECI frame without an ECI Δv cannot be sent.
+  p.impulses[3].dv_eci_valid = false;
+  EXPECT_THROW(to_lcm(p, 7, 1, 0, evade::guidance::PlanFrame::kEci, &m), std::invalid_argument);
 }
 
 TEST(BurnPlanConvert, NoOrTooManyImpulsesAreRefused) {
@@ -161,6 +178,7 @@ TEST(BurnPlanConvert, NoOrTooManyImpulsesAreRefused) {
     p.n_impulses = n;
     const std::string why = refusal(p);
     EXPECT_NE(why.find("BurnPlan.n_impulses = " + std::to_string(n)), std::string::npos) << why;
+    EXPECT_NE(why.find("[1, 8]"), std::string::npos) << why;
   }
 }
 
@@ -193,17 +211,27 @@ TEST(BurnPlanConvert, MalformedMessagesAreRejectedNamingTheField) {
   evade::evade_burn_plan_t good{};
   to_lcm(observability_plan(), 1, 2, &good);
   ASSERT_EQ(burn_plan_message_error(good), nullptr);
+  using R = evade::guidance::PlanReject;
+  ASSERT_EQ(evade::guidance_lcm::burn_plan_message_reject(good), R::kNone);
   struct Case {
     void (*spoil)(evade::evade_burn_plan_t*);
     const char* field;
+    R reject;
   };
   const Case cases[] = {
-      {[](evade::evade_burn_plan_t* m) { m->theta_rad = std::nan(""); }, "theta_rad"},
-      {[](evade::evade_burn_plan_t* m) { m->dv_lvlh_mps[2] = INFINITY; }, "dv_lvlh_mps"},
-      {[](evade::evade_burn_plan_t* m) { m->dv_eci_valid = 2; }, "dv_eci_valid"},
-      {[](evade::evade_burn_plan_t* m) { m->source = 9; }, "source"},
-      {[](evade::evade_burn_plan_t* m) { m->objective = 5; }, "objective"},
-      {[](evade::evade_burn_plan_t* m) { m->evaluations = -1; }, "evaluations"},
+      {[](evade::evade_burn_plan_t* m) { m->theta_rad = std::nan(""); }, "theta_rad", R::kNotFinite},
+      {[](evade::evade_burn_plan_t* m) { m->impulse_dv_rsw_mps[0][2] = INFINITY; },
+       "impulse_dv_rsw_mps", R::kNotFinite},
+      {[](evade::evade_burn_plan_t* m) { m->impulse_t_s[0] = NAN; }, "impulse_t_s", R::kNotFinite},
+      {[](evade::evade_burn_plan_t* m) { m->impulse_dv_eci_valid[0] = 2; }, "impulse_dv_eci_valid",
+       R::kMalformed},
+      {[](evade::evade_burn_plan_t* m) { m->source = 9; }, "source", R::kMalformed},
+      {[](evade::evade_burn_plan_t* m) { m->objective = 5; }, "objective", R::kMalformed},
+      {[](evade::evade_burn_plan_t* m) { m->evaluations = -1; }, "evaluations", R::kMalformed},
+      {[](evade::evade_burn_plan_t* m) { m->n_impulses = 0; }, "n_impulses", R::kImpulseCount},
+      {[](evade::evade_burn_plan_t* m) { m->n_impulses = 9; }, "n_impulses", R::kImpulseCount},
+      {[](evade::evade_burn_plan_t* m) { m->frame = 2; }, "frame", R::kUnknownFrame},
+      {[](evade::evade_burn_plan_t* m) { m->frame = 1; }, "frame", R::kUnknownFrame},
   };
   for (const Case& c : cases) {
     evade::evade_burn_plan_t m = good;
@@ -211,6 +239,7 @@ TEST(BurnPlanConvert, MalformedMessagesAreRejectedNamingTheField) {
     const char* why = burn_plan_message_error(m);
     ASSERT_NE(why, nullptr) << c.field;
     EXPECT_NE(std::string(why).find(c.field), std::string::npos) << why;
+    EXPECT_EQ(evade::guidance_lcm::burn_plan_message_reject(m), c.reject) << c.field;
     BurnPlan out;
     out.plan_id = 123;
     EXPECT_FALSE(from_lcm(m, &out)) << c.field;

@@ -95,15 +95,16 @@ TEST(BurnPlanPublisher, Seed4PlanSurvivesPublicationOverMemq) {
   EXPECT_GT(m.utime, 1600000000LL * 1000000LL);  // a real wall-clock time in us
   EXPECT_EQ(m.source, evade::evade_burn_plan_t::SOURCE_OBSERVABILITY_ISRES);
   EXPECT_EQ(m.objective, evade::evade_burn_plan_t::OBJECTIVE_PAPER);
-  EXPECT_EQ(m.dv_eci_valid, 0);
-  EXPECT_DOUBLE_EQ(m.dv_mps, 3.0);
-  EXPECT_DOUBLE_EQ(m.burn_time_s, 0.0);
+  EXPECT_EQ(m.n_impulses, 1);
+  EXPECT_EQ(m.impulse_dv_eci_valid[0], 0);
+  EXPECT_DOUBLE_EQ(m.impulse_dv_mps[0], 3.0);
+  EXPECT_DOUBLE_EQ(m.impulse_t_s[0], 0.0);
+  const double* dvm = m.impulse_dv_rsw_mps[0];
   // Δv in LVLH/RSW has magnitude |Δv| and follows from (ε, θ) through C_P_RSW = diag(-1,-1,1).
-  const double mag = std::sqrt(m.dv_lvlh_mps[0] * m.dv_lvlh_mps[0] + m.dv_lvlh_mps[1] * m.dv_lvlh_mps[1] +
-                               m.dv_lvlh_mps[2] * m.dv_lvlh_mps[2]);
+  const double mag = std::sqrt(dvm[0] * dvm[0] + dvm[1] * dvm[1] + dvm[2] * dvm[2]);
   EXPECT_NEAR(mag, 3.0, 1e-12);
   const evade::Vec3 dv = evade::observability::dv_rsw_from_angles(m.eps_rad, m.theta_rad, 3.0);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.dv_lvlh_mps[i], dv(i), 1e-12);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(dvm[i], dv(i), 1e-12);
   EXPECT_NEAR(m.theta_rad, -3.2453, 1e-3);  // the paper objective's optimum (objectives_test)
   EXPECT_GT(m.objective_value, 96.0);
   EXPECT_GT(m.evaluations, 2400);
@@ -112,7 +113,7 @@ TEST(BurnPlanPublisher, Seed4PlanSurvivesPublicationOverMemq) {
   EXPECT_EQ(m.theta_rad, res.theta_rad);
   EXPECT_EQ(m.objective_value, res.value);
   EXPECT_EQ(m.evaluations, res.evaluations);
-  for (int i = 0; i < 3; ++i) EXPECT_EQ(m.dv_lvlh_mps[i], res.dv_rsw_mps(i));
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(dvm[i], res.dv_rsw_mps(i));
   BurnPlan back;
   ASSERT_TRUE(evade::guidance_lcm::from_lcm(m, &back));
   EXPECT_EQ(back.plan_id, 17);
@@ -150,19 +151,45 @@ TEST(BurnPlanPublisher, PlanPublishedOverMemqDecodesToTheSamePlan) {
   EXPECT_FALSE(back.observability.valid);
 }
 
-TEST(BurnPlanPublisher, TwoImpulsePlanIsRefusedAndNothingIsSent) {
+TEST(BurnPlanPublisher, TooManyImpulsesAreRefusedAndNothingIsSent) {
   Memq lcm;
   ASSERT_TRUE(lcm.good());
   BurnPlan p = simple_plan();
-  p.n_impulses = 2;
+  p.n_impulses = BurnPlan::kMaxImpulses + 1;
   try {
     publish_burn_plan(lcm.get(), kChannel, p, 1);
     FAIL() << "no throw";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("BurnPlan.n_impulses = 2"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("BurnPlan.n_impulses = 9"), std::string::npos)
         << e.what();
   }
   EXPECT_TRUE(lcm.drain().empty());
+}
+
+TEST(BurnPlanPublisher, TwoImpulsePlanWithGivenTimesIsPublishedWhole) {
+  Memq lcm;
+  ASSERT_TRUE(lcm.good());
+  BurnPlan p = simple_plan();
+  p.n_impulses = 2;
+  p.impulses[1].t_s = p.impulses[0].t_s + 108000.0;
+  p.impulses[1].dv_rsw_mps = evade::Vec3(0.0, -0.004, 0.0);
+  evade::lcm_link::PlanStamp stamp;
+  stamp.utime = 1000000000;
+  stamp.epoch_utime = 1000500000;
+  const std::int64_t utime = publish_burn_plan(lcm.get(), kChannel, p, 3, stamp);
+  EXPECT_EQ(utime, 1000000000);
+  const auto& frames = lcm.drain();
+  ASSERT_EQ(frames.size(), 1u);
+  evade::evade_burn_plan_t m{};
+  ASSERT_EQ(m.decode(frames[0].data(), 0, static_cast<int>(frames[0].size())),
+            static_cast<int>(frames[0].size()));
+  evade::guidance::UplinkedPlan back;
+  ASSERT_TRUE(evade::guidance_lcm::from_lcm(m, &back));
+  EXPECT_EQ(m.utime, 1000000000);
+  EXPECT_EQ(back.epoch_utime_us, 1000500000);
+  EXPECT_EQ(back.plan.n_impulses, 2);
+  EXPECT_EQ(back.plan.impulses[1].t_s, p.impulses[1].t_s);
+  EXPECT_EQ(back.plan.impulses[1].dv_rsw_mps, p.impulses[1].dv_rsw_mps);
 }
 
 TEST(BurnPlanPublisher, NullLcmOrEmptyChannelIsInvalidArgument) {

@@ -11,6 +11,7 @@
 #include "evade/evade_nav_state_t.hpp"
 #include "evade/evade_thrust_cmd_t.hpp"
 #include "evade/guidance/guidance_law.hpp"
+#include "evade/guidance/plan_executor.hpp"
 
 namespace evade::guidance_lcm {
 
@@ -28,5 +29,7 @@ void to_lcm(const guidance::ThrustCommand& c, std::int64_t seq, std::int64_t inp
             evade_thrust_cmd_t* out) noexcept;
 /// Fills the guidance-law part of the status message; node counters are set by the node.
 void to_lcm(const guidance::GuidanceStatus& s, evade_guidance_status_t* out) noexcept;
+/// Fills the plan_* fields of *out from the plan executor's status (the rest unchanged).
+void to_lcm(const guidance::PlanExecStatus& s, evade_guidance_status_t* out) noexcept;
 
 }  // namespace evade::guidance_lcm

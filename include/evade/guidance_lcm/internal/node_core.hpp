@@ -21,15 +21,18 @@
 
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_arm_t.hpp"
+#include "evade/evade_burn_plan_t.hpp"
 #include "evade/evade_guidance_status_t.hpp"
 #include "evade/evade_nav_state_t.hpp"
 #include "evade/evade_sim_clock_t.hpp"
 #include "evade/evade_thrust_cmd_t.hpp"
 #include "evade/guidance/guidance_law.hpp"
+#include "evade/guidance/plan_executor.hpp"
 #include "evade/guidance_lcm/internal/cycle_stats.hpp"
 #include "evade/guidance_lcm/input_accounting.hpp"
 #include "evade/guidance_lcm/node_config.hpp"
 #include "evade/guidance_lcm/internal/input_queue.hpp"
+#include "evade/guidance_lcm/internal/plan_inbox.hpp"
 #include "evade/guidance_lcm/internal/raw_publisher.hpp"
 #include "evade/guidance_lcm/internal/seq_tracker.hpp"
 
@@ -73,6 +76,8 @@ class GuidanceNode {
   std::int64_t ticks_received() const noexcept { return ticks_received_; }
   std::int64_t ticks_missed() const noexcept { return ticks_missed_; }
   bool armed() const noexcept { return armed_; }
+  /// The uplinked burn plan's executor (docs/GUIDANCE_NODE.md PLAN-*).
+  const guidance::PlanExecutor& plan_executor() const noexcept { return plan_exec_; }
 
  private:
   struct SubContext {
@@ -81,6 +86,9 @@ class GuidanceNode {
   };
   static void on_input(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
   static void on_clock(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
+  static void on_plan(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
+  void process_plans(std::int64_t now_us) noexcept;
+  void admit_plan(const PlanInbox::Slot& raw, std::int64_t now_us) noexcept;
   void process_queue(std::int64_t now_us) noexcept;
   template <typename Msg>
   bool admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) noexcept;
@@ -112,6 +120,13 @@ class GuidanceNode {
   bool have_angles_ = false;
   std::int64_t last_angles_utime_ = -1;
   std::int64_t cycles_ = 0;
+
+  // Uplinked burn plans (EVADE_BURN_PLAN): own bounded inbox, the executor, a decode buffer.
+  lcm_subscription_t* plan_sub_ = nullptr;
+  PlanInbox plan_inbox_;
+  guidance::PlanExecutor plan_exec_;
+  evade_burn_plan_t plan_msg_{};
+  guidance::UplinkedPlan plan_{};
 
   // Lockstep tick.
   bool tick_pending_ = false;

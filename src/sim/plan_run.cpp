@@ -1,0 +1,190 @@
+// Plan execution in the simulator (plan_run.hpp; docs/GUIDANCE_NODE.md PLAN-SIM-1): truth of
+// both objects by DOP853 with the actuator's acceleration held over each cycle, burns
+// recorded as the actuator delivered them.
+#include "evade/sim/plan_run.hpp"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "evade/guidance/plan_executor.hpp"
+#include "evade/sim/actuator_model.hpp"
+
+namespace evade::sim {
+namespace {
+
+using Vec12 = Eigen::Matrix<double, 12, 1>;
+
+Vec12 pack(const StateEci& a, const StateEci& b) {
+  Vec12 x;
+  x << a.r_eci_m, a.v_eci_mps, b.r_eci_m, b.v_eci_mps;
+  return x;
+}
+StateEci first(const Vec12& x) { return {x.segment<3>(0), x.segment<3>(3)}; }
+StateEci second(const Vec12& x) { return {x.segment<3>(6), x.segment<3>(9)}; }
+
+void check(const PlanRunConfig& cfg) {
+  if (!(cfg.rate_hz > 0.0 && cfg.rate_hz <= 1000.0))
+    throw std::invalid_argument("plan run: rate_hz must be in (0, 1000]");
+  if (!(cfg.duration_s > 0.0 && cfg.duration_s <= 1e7))
+    throw std::invalid_argument("plan run: duration_s must be in (0, 1e7]");
+  cfg.integrator.validate();
+}
+
+class PlanLoop {
+ public:
+  PlanLoop(const PlanRunConfig& cfg, GuidanceEndpoint& g)
+      : cfg_(cfg),
+        g_(g),
+        cycle_us_(std::llround(1e6 / cfg.rate_hz)),
+        integ_(Dop853<Vec12>::Rhs([this](double, const Vec12& x) { return rhs(x); }),
+               cfg.integrator),
+        x_(pack(cfg.satellite0, cfg.other0)),
+        actuator_(cfg.actuator) {}
+
+  PlanRunResult run(const PlanRunHook& hook) {
+    const long n = static_cast<long>(std::llround(cfg_.duration_s * 1e6 / cycle_us_));
+    for (long k = 0; k < n; ++k) {
+      const std::int64_t utime = kPlanRunUtime0 + k * cycle_us_;
+      if (hook) hook(k, utime);
+      exchange(utime);
+      integrate(1e-6 * static_cast<double>(k * cycle_us_),
+                1e-6 * static_cast<double>((k + 1) * cycle_us_));
+      ++res_.cycles;
+    }
+    close_burn(1e-6 * static_cast<double>(n * cycle_us_));
+    res_.satellite_end = first(x_);
+    res_.other_end = second(x_);
+    res_.has_final_status = g_.status(&res_.final_status);
+    return res_;
+  }
+
+ private:
+  Vec12 rhs(const Vec12& x) const {
+    Vec12 d;
+    d.head<6>() = orbit_derivative(x.head<6>(), cfg_.gravity, cfg_.earth);
+    d.segment<3>(3) += a_;
+    d.tail<6>() = orbit_derivative(x.tail<6>(), cfg_.gravity, cfg_.earth);
+    return d;
+  }
+
+  void exchange(std::int64_t utime) {
+    guidance::NavState nav;
+    nav.utime_us = utime;
+    nav.r_eci_m = x_.segment<3>(0);
+    nav.v_eci_mps = x_.segment<3>(3);
+    nav.valid = true;
+    a_ = actuator_.accel_eci_mps2(g_.exchange(utime, nav, nullptr));
+    const double t = 1e-6 * static_cast<double>(utime - kPlanRunUtime0);
+    if (a_.norm() > 0.0) {
+      if (!burning_) {
+        burning_ = true;
+        burn_ = DeliveredBurn{};
+        burn_.t_start_s = t;
+        states_.clear();
+      }
+      states_.push_back(first(x_));
+    } else {
+      close_burn(t);
+    }
+  }
+
+  void close_burn(double t_s) {
+    if (!burning_) return;
+    burning_ = false;
+    burn_.t_end_s = t_s;
+    burn_.satellite_at_centre = states_[states_.size() / 2];
+    res_.burns.push_back(burn_);
+  }
+
+  void integrate(double t0, double t1) {
+    if (burning_) burn_.dv_eci_mps += a_ * (t1 - t0);
+    integ_.reset(t0, x_);
+    while (integ_.t_s() != t1)
+      if (!integ_.step(t1)) throw std::runtime_error("plan run: " + integ_.failure_reason());
+    x_ = integ_.x();
+  }
+
+  const PlanRunConfig& cfg_;
+  GuidanceEndpoint& g_;
+  const std::int64_t cycle_us_;
+  Dop853<Vec12> integ_;
+  Vec12 x_;
+  Vec3 a_ = Vec3::Zero();
+  Actuator actuator_;
+  bool burning_ = false;
+  DeliveredBurn burn_;
+  std::vector<StateEci> states_;
+  PlanRunResult res_;
+};
+
+class PlanEndpoint final : public GuidanceEndpoint {
+ public:
+  PlanEndpoint(const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_us)
+      : law_(cfg), exec_(guidance::PlanExecutorConfig::from(cfg)) {
+    up_.plan = plan;
+    up_.epoch_utime_us = epoch_us;
+  }
+  guidance::ThrustCommand exchange(std::int64_t utime_us, const guidance::NavState& nav,
+                                   const guidance::AnglesMeasurement* meas) override {
+    guidance::GuidanceInput in;
+    in.nav = nav;
+    in.armed = true;
+    in.has_measurement = (meas != nullptr);
+    if (meas != nullptr) in.meas = *meas;
+    if (!loaded_) {
+      loaded_ = true;
+      const guidance::PlanReject r = exec_.load(up_, utime_us, true, 0.0);
+      if (r != guidance::PlanReject::kNone)
+        throw std::invalid_argument(std::string("plan rejected: ") +
+                                    guidance::plan_reject_name(r));
+    }
+    const guidance::ThrustCommand c = law_.step(in, utime_us);
+    return guidance::merge_plan_thrust(c, exec_.step(nav, true, c.mode, utime_us));
+  }
+  bool status(guidance::GuidanceStatus* out) const override {
+    *out = law_.status();
+    return true;
+  }
+
+ private:
+  guidance::GuidanceLaw law_;
+  guidance::PlanExecutor exec_;
+  guidance::UplinkedPlan up_;
+  bool loaded_ = false;
+};
+
+}  // namespace
+
+PlanRunResult run_plan_simulation(const PlanRunConfig& cfg, GuidanceEndpoint& guidance,
+                                  const PlanRunHook& before_exchange) {
+  check(cfg);
+  PlanLoop loop(cfg, guidance);
+  return loop.run(before_exchange);
+}
+
+void propagate_unforced(const PlanRunConfig& cfg, double t_s, StateEci* satellite,
+                        StateEci* other) {
+  const GravityModel model = cfg.gravity;
+  const EarthModel earth = cfg.earth;
+  Dop853<Vec12> integ(Dop853<Vec12>::Rhs([model, earth](double, const Vec12& x) {
+                        Vec12 d;
+                        d.head<6>() = orbit_derivative(x.head<6>(), model, earth);
+                        d.tail<6>() = orbit_derivative(x.tail<6>(), model, earth);
+                        return d;
+                      }),
+                      cfg.integrator);
+  integ.reset(0.0, pack(cfg.satellite0, cfg.other0));
+  while (integ.t_s() != t_s)
+    if (!integ.step(t_s)) throw std::runtime_error("plan run: " + integ.failure_reason());
+  *satellite = first(integ.x());
+  *other = second(integ.x());
+}
+
+std::unique_ptr<GuidanceEndpoint> make_in_process_plan_endpoint(
+    const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_utime_us) {
+  return std::make_unique<PlanEndpoint>(cfg, plan, epoch_utime_us);
+}
+
+}  // namespace evade::sim

@@ -1,0 +1,173 @@
+// The guidance node and uplinked burn plans over memq:// (docs/GUIDANCE_NODE.md PLAN-IN-1,
+// PLAN-VAL-1, PLAN-EXE-1, PLAN-END-1, PLAN-OUT-1): a plan on EVADE_BURN_PLAN is accounted like
+// every input, flown when the law does not thrust, reported in the status; each rejection
+// reason is counted in the status; a disarm cancels it; close-range evasion pre-empts it.
+#include <cmath>
+#include <cstdint>
+
+#include <gtest/gtest.h>
+
+#include "evade/evade_arm_t.hpp"
+#include "evade/evade_burn_plan_t.hpp"
+#include "evade/guidance_lcm/burn_plan_convert.hpp"
+#include "node_harness.hpp"
+
+namespace evade::guidance_lcm::test {
+namespace {
+
+using S = evade_guidance_status_t;
+constexpr std::int64_t kT0 = 1'000'000'000;  // first cycle [us]
+
+// One impulse of 0.1 m/s along track at t = 1 s after kT0: 5 cycles at 1 m/s^2.
+evade_burn_plan_t plan_msg(std::int64_t seq, double t_s = 1.0, Vec3 dv = Vec3(0.0, 0.1, 0.0)) {
+  BurnPlan p;
+  p.plan_id = seq;
+  p.n_impulses = 1;
+  p.impulses[0].t_s = t_s;
+  p.impulses[0].dv_rsw_mps = dv;
+  evade_burn_plan_t m{};
+  to_lcm(p, kT0, seq, kT0, guidance::PlanFrame::kRsw, &m);
+  return m;
+}
+
+// Nav only (no angles: the law stays STANDBY) at cycle k.
+const evade_thrust_cmd_t& nav_cycle(Rig& rig, int k) {
+  const std::int64_t t = kT0 + k * kPeriodUs;
+  evade_nav_state_t nav{};
+  rig.enc.nav_at(t, &nav);
+  nav.seq = k + 1;
+  rig.pub.send(kChanNav, nav);
+  return rig.cycle(t);
+}
+
+void expect_accounted(const Rig& rig) {
+  EXPECT_EQ(rig.node.counts().received, rig.node.counts().accounted());
+}
+
+TEST(NodePlan, AcceptedPlanIsFlownWhenTheLawIsIdleAndReportedInTheStatus) {
+  Rig rig;
+  rig.pub.send(kChanPlan, plan_msg(1));
+  int thrust_cycles = 0;
+  Vec3 dv_eci = Vec3::Zero();
+  Vec3 want_eci = Vec3::Zero();  // 0.02 m/s per cycle along that cycle's S axis
+  for (int k = 0; k < 100; ++k) {
+    const evade_thrust_cmd_t& c = nav_cycle(rig, k);
+    EXPECT_NE(c.mode, 2) << "law not evading";
+    if (c.accel_mps2 > 0.0) {
+      ++thrust_cycles;
+      dv_eci += c.accel_mps2 * 0.02 * Vec3(c.u_eci[0], c.u_eci[1], c.u_eci[2]);
+      evade_nav_state_t nav{};
+      rig.enc.nav_at(kT0 + k * kPeriodUs, &nav);
+      const Vec3 r(nav.r_eci_m[0], nav.r_eci_m[1], nav.r_eci_m[2]);
+      const Vec3 v(nav.v_eci_mps[0], nav.v_eci_mps[1], nav.v_eci_mps[2]);
+      want_eci += 0.02 * r.cross(v).normalized().cross(r.normalized());
+      EXPECT_GE(k, 47);  // burn [0.95, 1.05] s: first cycle 0.94 s
+      EXPECT_LE(k, 51);
+    }
+  }
+  EXPECT_EQ(thrust_cycles, 5);
+  EXPECT_LT((dv_eci - want_eci).norm(), 1e-14);  // rounding of 5 sums of 0.02 m/s
+  const S& s = rig.node.last_status();
+  EXPECT_EQ(s.plan_id, 1);
+  EXPECT_EQ(s.plan_state, S::PLAN_STATE_ENDED);
+  EXPECT_EQ(s.plan_end, S::PLAN_END_COMPLETED);
+  EXPECT_EQ(s.plan_n_impulses, 1);
+  EXPECT_EQ(s.plan_impulses_done, 1);
+  EXPECT_NEAR(s.plan_dv_delivered_mps[0], 0.1, 1e-12);
+  EXPECT_EQ(s.plan_burn_start_utime[0], kT0 + 47 * kPeriodUs);
+  EXPECT_EQ(s.plan_burn_end_utime[0], kT0 + 52 * kPeriodUs);
+  EXPECT_EQ(s.plan_n_accepted, 1);
+  expect_accounted(rig);
+}
+
+struct RejectCase {
+  std::int8_t code;
+  evade_burn_plan_t msg;
+};
+
+TEST(NodePlan, EachRejectionReasonIsCountedInTheStatus) {
+  const double nan = std::nan("");
+  std::vector<RejectCase> cases;
+  auto add = [&](std::int8_t code, evade_burn_plan_t m) { cases.push_back({code, m}); };
+  evade_burn_plan_t m = plan_msg(10);
+  m.source = 9;
+  add(S::PLAN_REJECT_MALFORMED, m);
+  m = plan_msg(11);
+  m.n_impulses = 0;
+  add(S::PLAN_REJECT_IMPULSE_COUNT, m);
+  m = plan_msg(12);
+  m.impulse_dv_rsw_mps[0][1] = nan;
+  add(S::PLAN_REJECT_NOT_FINITE, m);
+  m = plan_msg(13);
+  m.frame = 5;
+  add(S::PLAN_REJECT_UNKNOWN_FRAME, m);
+  add(S::PLAN_REJECT_BURN_IN_PAST, plan_msg(14, -1.0));
+  m = plan_msg(15);
+  m.n_impulses = 2;
+  m.impulse_t_s[1] = 0.5;
+  m.impulse_dv_rsw_mps[1][0] = 0.01;
+  add(S::PLAN_REJECT_NOT_ORDERED, m);
+  m.impulse_t_s[1] = 1.07;  // first burn ends at 1.05 s: closer than one cycle
+  m.seq = 16;
+  add(S::PLAN_REJECT_OVERLAPPING, m);
+  add(S::PLAN_REJECT_OVER_BUDGET, plan_msg(17, 100.0, Vec3(0.0, 150.0, 0.0)));  // budget 100
+  add(S::PLAN_REJECT_OVER_THRUST_LIMIT, plan_msg(18, 1000.0, Vec3(0.0, 700.0, 0.0)));
+  Rig rig;
+  nav_cycle(rig, 0);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    rig.pub.send(kChanPlan, cases[i].msg);
+    nav_cycle(rig, static_cast<int>(i) + 1);
+    const S& s = rig.node.last_status();
+    EXPECT_EQ(s.plan_last_reject, cases[i].code) << i;
+    EXPECT_EQ(s.plan_n_rejected[cases[i].code], 1) << i;
+  }
+  // Not newer: accept 30, then 30 again and 29.
+  rig.pub.send(kChanPlan, plan_msg(30, 5.0));
+  rig.pub.send(kChanPlan, plan_msg(30, 5.0));
+  rig.pub.send(kChanPlan, plan_msg(29, 5.0));
+  nav_cycle(rig, 20);
+  EXPECT_EQ(rig.node.last_status().plan_n_rejected[S::PLAN_REJECT_NOT_NEWER], 2);
+  EXPECT_EQ(rig.node.last_status().plan_id, 30);
+  // Disarmed: the arm message cancels plan 30, then plan 31 is refused.
+  evade_arm_t arm{};
+  arm.utime = kT0 + 21 * kPeriodUs;
+  arm.seq = 1;
+  arm.armed = false;
+  rig.pub.send(kChanArm, arm);
+  nav_cycle(rig, 21);
+  EXPECT_EQ(rig.node.last_status().plan_end, S::PLAN_END_CANCELLED_DISARM);
+  rig.pub.send(kChanPlan, plan_msg(31, 5.0));
+  nav_cycle(rig, 22);
+  EXPECT_EQ(rig.node.last_status().plan_n_rejected[S::PLAN_REJECT_DISARMED], 1);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, 1);
+  // Bytes that are not a plan: an input rejected at decode.
+  const std::uint8_t junk[40] = {1, 2, 3};
+  rig.pub.send_bytes(kChanPlan, junk, sizeof junk);
+  const auto decode_before = rig.node.counts().by_reason[static_cast<int>(Reason::kDecodeFailed)];
+  nav_cycle(rig, 23);
+  EXPECT_EQ(rig.node.counts().by_reason[static_cast<int>(Reason::kDecodeFailed)],
+            decode_before + 1);
+  expect_accounted(rig);
+}
+
+TEST(NodePlan, CloseRangeEvasionPreemptsAWaitingPlanWhichIsAbandoned) {
+  Rig rig;
+  rig.pub.send(kChanPlan, plan_msg(1, 2.0));
+  for (int k = 0; k < 60; ++k) {
+    const evade_thrust_cmd_t& c = rig.good_cycle(kT0 + k * kPeriodUs, k + 1);
+    if (c.mode == 2) {
+      EXPECT_EQ(rig.node.last_status().plan_end, S::PLAN_END_PREEMPTED_EVASION);
+    }
+  }
+  const S& s = rig.node.last_status();
+  EXPECT_EQ(s.mode, 2);  // the law evades (paper 000)
+  EXPECT_EQ(s.plan_id, 1);
+  EXPECT_EQ(s.plan_state, S::PLAN_STATE_ENDED);
+  EXPECT_EQ(s.plan_end, S::PLAN_END_PREEMPTED_EVASION);
+  EXPECT_EQ(s.plan_impulses_done, 0);
+  EXPECT_EQ(s.plan_dv_delivered_mps[0], 0.0);
+  expect_accounted(rig);
+}
+
+}  // namespace
+}  // namespace evade::guidance_lcm::test
