@@ -1,13 +1,16 @@
 // `evade propagate`: the foundation demo. Propagates one orbit with the chosen gravity model
 // and reports the final state, the element changes, and for J2 the analytic secular rates
-// (Vallado eq. 9-41, 9-42) beside the numerically observed drift.
+// (Vallado eq. 9-41, 9-42) beside the numerically observed drift. With --tle or --omm it
+// propagates every object of a catalog with SGP4 instead (cmd_propagate_tle.cpp).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "cli.hpp"
+#include "cmd_propagate_tle.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/core/elements.hpp"
@@ -20,6 +23,7 @@ namespace {
 
 struct PropagateOptions {
   CommonOptions common;
+  CatalogPropagateOptions catalog;  ///< --tle/--omm path
 };
 
 // What the scenario asks for (read_earth for the Earth model; the orbit's elements and the
@@ -112,6 +116,12 @@ void print_text(const PropagateInputs& in, const PropagateResult& r) {
 }
 
 int run_propagate(const PropagateOptions& o) {
+  if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) {
+    if (!o.common.sets.empty()) throw std::invalid_argument("--set applies to the scenario, not to --tle/--omm");
+    CatalogPropagateOptions c = o.catalog;
+    c.json = o.common.json;
+    return run_propagate_catalog(c);
+  }
   const config::Scenario sc = load_scenario(o.common);
   const PropagateInputs in = read_inputs(sc);
   sc.check_all_used();
@@ -124,11 +134,21 @@ int run_propagate(const PropagateOptions& o) {
   return 0;
 }
 
+void add_catalog_options(CLI::App& app, CatalogPropagateOptions& c) {
+  auto* tle = app.add_option("--tle", c.tle_path, "TLE/3LE file: propagate every object with SGP4");
+  auto* omm = app.add_option("--omm", c.omm_path, "CCSDS OMM (KVN or XML) or GP JSON/CSV file, as --tle");
+  tle->excludes(omm);
+  app.add_option("--span-s", c.span_s, "with --tle/--omm: time span from the latest element epoch (s)");
+  app.add_option("--step-s", c.step_s, "with --tle/--omm: output step (s)");
+  app.add_option("--frame", c.frame, "with --tle/--omm: teme or eci (J2000)");
+}
+
 const bool kRegistered = register_command(
     {"propagate"}, "Propagate one orbit (two-body or two-body + J2): the foundation demo",
     [](CLI::App& app) {
       auto o = std::make_shared<PropagateOptions>();
       add_common_options(app, o->common, "demo-leo");
+      add_catalog_options(app, o->catalog);
       return [o]() { return run_propagate(*o); };
     });
 
