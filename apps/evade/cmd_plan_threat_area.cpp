@@ -88,6 +88,23 @@ nlohmann::json summary_json(const config::Scenario& sc, const ThreatScenario& in
   return j;
 }
 
+// How the direction search's result was certified.
+nlohmann::json search_json(const EvasionResult& r) {
+  const SearchCertificate& c = r.certificate;
+  return {{"method", c.grid_evaluations > 0 ? "sweep+bobyqa" : "isres"},
+          {"grid_evaluations", c.grid_evaluations},
+          {"local_evaluations", c.local_evaluations},
+          {"local_starts", c.local_starts},
+          {"local_spread_s", c.local_spread_s},
+          {"lower_bound_arc_s", c.lower_bound_arc_s},
+          {"bound_cells", c.bound_cells},
+          {"open_cells", c.open_cells},
+          {"certified", c.certified},
+          {"certify_runtime_s", c.certify_runtime_s},
+          {"evaluations", r.evaluations},
+          {"wall_time_s", r.runtime_s}};
+}
+
 // The optimal direction at V_E.
 void add_evasion_json(const ThreatStudy& s, nlohmann::json& j) {
   const EvasionResult& r = s.evasion;
@@ -103,6 +120,7 @@ void add_evasion_json(const ThreatStudy& s, nlohmann::json& j) {
   j["dv_rsw_mps"] = vec_json(r.dv_rsw_mps);
   j["evaluations"] = r.evaluations;
   j["decisions"] = counts_json(r.counts);
+  j["search"] = search_json(r);
 }
 
 void add_elimination_json(const ThreatStudy& s, nlohmann::json& j) {
@@ -174,7 +192,7 @@ void progress_elim(double lo, double hi) {
 ThreatStudyProgress stderr_progress() {
   ThreatStudyProgress p;
   p.optimizing = [](double dv_mps, int evals) {
-    std::fprintf(stderr, "threat-area: optimizing the burn direction at V_E = %.3f m/s (%d evals)\n",
+    std::fprintf(stderr, "threat-area: optimizing the burn direction at V_E = %.3f m/s (<= %d evals)\n",
                  dv_mps, evals);
   };
   p.eliminating = [](double tol_mps) {
@@ -231,6 +249,13 @@ void print_text(const ThreatScenario& in, const ThreatStudy& s) {
               "%ld evaluations, %.3f s\n",
               r.dv_mps, r.area.arc_s, r.area.arc_deg, r.alpha_rad, r.theta_rad, r.evaluations,
               s.runtime_s);
+  const SearchCertificate& c = r.certificate;
+  if (c.grid_evaluations > 0 && c.bound_cells > 0) {
+    std::printf("  search: sweep %ld + BOBYQA %ld evaluations; no direction's arc is below "
+                "%.2f s (%ld cells bounded, %s)\n",
+                c.grid_evaluations, c.local_evaluations, c.lower_bound_arc_s, c.bound_cells,
+                c.certified ? "certified" : "not certified within the tolerance");
+  }
   if (s.elimination) {
     std::printf("  eliminating V_E = %.3f m/s (%.1f%% of dv_max; t0 bound %.3f m/s)\n",
                 s.elimination->eliminating_dv_mps, 100.0 * s.eliminating_to_dv_max_ratio,
@@ -267,7 +292,7 @@ const bool kRegistered = register_command(
       o->dv_opt = app.add_option("--dv", o->dv_mps, "evasion burn magnitude V_E [m/s]");
       o->dt_opt = app.add_option("--dt-transfer", o->dt_transfer_s, "chaser transfer time [s]");
       o->imp_opt = app.add_option("--impulses", o->impulses, "chaser impulses N (2..4)");
-      o->seed_opt = app.add_option("--seed", o->seed, "ISRES random seed");
+      o->seed_opt = app.add_option("--seed", o->seed, "seed: ISRES RNG / the sweep's sample position in each cell");
       app.add_flag("--eliminate", o->eliminate, "find the smallest V_E with no threat area");
       app.add_option("--sweep-dv", o->sweep_dv, "list of V_E [m/s]: arc for each (Fig. 8)")
           ->delimiter(',');

@@ -1,6 +1,8 @@
 // Optimal evasive burn direction (min threat arc) and the smallest eliminating burn.
 // Paper 001 (Yu, Wang, Sun 2017) sec. 3.1 (eq. 4: ΔV_opt from V_E, α, θ in VVLH; eq. 7: arc
-// objective) and sec. 3.2 (GA; we use NLopt GN_ISRES). See evade/threat/evasion.hpp.
+// objective) and sec. 3.2 (GA: NLopt GN_ISRES as an option; by default the sweep search of
+// evade/threat/direction_search.hpp). See evade/threat/evasion.hpp.
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -9,6 +11,7 @@
 
 #include "evade/core/constants.hpp"
 #include "evade/core/frames.hpp"
+#include "evade/threat/direction_search.hpp"
 #include "evade/threat/evasion.hpp"
 
 namespace evade::threat {
@@ -53,6 +56,34 @@ void check_options(const EvasionOptions& opt) {
       opt.theta_max_rad > kPi + 1e-12) {
     bad("theta_min_rad", opt.theta_min_rad, "-pi <= theta_min < theta_max <= pi");
   }
+  if (opt.sweep_alpha_cells < 1) bad("sweep_alpha_cells", opt.sweep_alpha_cells, ">= 1");
+  if (opt.sweep_theta_cells < 4) bad("sweep_theta_cells", opt.sweep_theta_cells, ">= 4");
+  if (opt.local_starts < 0) bad("local_starts", opt.local_starts, ">= 0");
+  if (!(opt.local_xtol_rad > 0.0)) bad("local_xtol_rad", opt.local_xtol_rad, "> 0");
+  if (opt.certify_max_cells < 0) bad("certify_max_cells", opt.certify_max_cells, ">= 0");
+  if (!(opt.certify_rel_tol > 0.0 && opt.certify_rel_tol < 1.0)) {
+    bad("certify_rel_tol", opt.certify_rel_tol, "0 < tol < 1");
+  }
+}
+
+// GN_ISRES over (α, θ) from the box's centre; the objective keeps the best point.
+void isres_search(const EvasionOptions& opt, Objective& obj) {
+  nlopt::srand(opt.seed);
+  nlopt::opt o(nlopt::GN_ISRES, 2);
+  o.set_lower_bounds({opt.alpha_min_rad, opt.theta_min_rad});
+  o.set_upper_bounds({opt.alpha_max_rad, opt.theta_max_rad});
+  o.set_population(static_cast<unsigned>(opt.population));
+  o.set_maxeval(opt.max_evaluations);
+  if (opt.stop_arc_s >= 0.0) o.set_stopval(opt.stop_arc_s);
+  o.set_min_objective(arc_objective, &obj);
+  std::vector<double> x = {0.5 * (opt.alpha_min_rad + opt.alpha_max_rad),
+                           0.5 * (opt.theta_min_rad + opt.theta_max_rad)};
+  double f = 0.0;
+  try {
+    o.optimize(x, f);
+  } catch (const nlopt::roundoff_limited&) {
+    // best point is tracked in obj
+  }
 }
 
 }  // namespace
@@ -73,6 +104,14 @@ EvasionResult optimize_evasion(const ThreatAreaSolver& solver, double dv_mps,
                                 " is invalid; allowed: finite, >= 0");
   }
   check_options(opt);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto finish = [&](EvasionResult r) {
+    r.dv_vvlh_mps = evasion_dv_vvlh(dv_mps, r.alpha_rad, r.theta_rad);
+    r.dv_rsw_mps = evasion_dv_rsw(dv_mps, r.alpha_rad, r.theta_rad);
+    r.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  };
+  if (dv_mps > 0.0 && !opt.use_isres) return finish(sweep_direction_search(solver, dv_mps, opt));
   Objective obj;
   obj.solver = &solver;
   obj.dv_mps = dv_mps;
@@ -80,33 +119,16 @@ EvasionResult optimize_evasion(const ThreatAreaSolver& solver, double dv_mps,
     const double x[2] = {0.0, 0.0};
     arc_objective(2, x, nullptr, &obj);
   } else {
-    nlopt::srand(opt.seed);
-    nlopt::opt o(nlopt::GN_ISRES, 2);
-    o.set_lower_bounds({opt.alpha_min_rad, opt.theta_min_rad});
-    o.set_upper_bounds({opt.alpha_max_rad, opt.theta_max_rad});
-    o.set_population(static_cast<unsigned>(opt.population));
-    o.set_maxeval(opt.max_evaluations);
-    if (opt.stop_arc_s >= 0.0) o.set_stopval(opt.stop_arc_s);
-    o.set_min_objective(arc_objective, &obj);
-    std::vector<double> x = {0.5 * (opt.alpha_min_rad + opt.alpha_max_rad),
-                             0.5 * (opt.theta_min_rad + opt.theta_max_rad)};
-    double f = 0.0;
-    try {
-      o.optimize(x, f);
-    } catch (const nlopt::roundoff_limited&) {
-      // best point is tracked in obj
-    }
+    isres_search(opt, obj);
   }
   EvasionResult r;
   r.dv_mps = dv_mps;
   r.alpha_rad = obj.best_alpha;
   r.theta_rad = obj.best_theta;
-  r.dv_vvlh_mps = evasion_dv_vvlh(dv_mps, r.alpha_rad, r.theta_rad);
-  r.dv_rsw_mps = evasion_dv_rsw(dv_mps, r.alpha_rad, r.theta_rad);
   r.area = obj.best_area;
   r.evaluations = obj.evaluations;
   r.counts = obj.counts;
-  return r;
+  return finish(r);
 }
 
 EliminationResult find_eliminating_dv(const ThreatAreaSolver& solver, const EvasionOptions& opt,

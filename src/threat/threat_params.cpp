@@ -39,10 +39,13 @@ const Param<T> kOptionRows[] = {
 const Param<E> kEvasionRows[] = {
     EVADE_PARAM_REAL(E, evasion.dv_mps, "m/s", 0.0, 1e5, false,
                      "target's evasion burn V_E of the single optimization"),
+    EVADE_PARAM_BOOL(E, evasion.use_isres,
+                     "search the direction with ISRES (the paper's GA) instead of the sweep"),
     EVADE_PARAM_INT(E, evasion.population, "-", 2, 100000, "ISRES population"),
     EVADE_PARAM_INT(E, evasion.max_evaluations, "-", 1, 100000000,
-                    "threat-area evaluations of one direction search"),
-    EVADE_PARAM_SEED(E, evasion.seed, "ISRES random seed"),
+                    "cap of threat-area evaluations of one direction search"),
+    EVADE_PARAM_SEED(E, evasion.seed,
+                     "ISRES random seed; the sweep's sample position inside each cell"),
     EVADE_PARAM_REAL(E, evasion.alpha_min_deg, "deg", -90.0, 90.0, false,
                      "lower bound of the pitch alpha (elevation, + toward the zenith)"),
     EVADE_PARAM_REAL(E, evasion.alpha_max_deg, "deg", -90.0, 90.0, false,
@@ -51,6 +54,19 @@ const Param<E> kEvasionRows[] = {
                      "lower bound of the yaw theta (azimuth from the velocity toward VVLH +y)"),
     EVADE_PARAM_REAL(E, evasion.theta_max_deg, "deg", -180.0, 180.0, false,
                      "upper bound of the yaw theta"),
+    EVADE_PARAM_INT(E, evasion.sweep_alpha_cells, "-", 1, 1000,
+                    "sweep cells in sin(alpha) (equal-area cells)"),
+    EVADE_PARAM_INT(E, evasion.sweep_theta_cells, "-", 4, 1000, "sweep cells in theta"),
+    EVADE_PARAM_REAL(E, evasion.sweep_edge_tol_s, "s", 0.0, 1e4, false,
+                     "edge tolerance of the sweep's ranking evaluations (coarser is cheaper)"),
+    EVADE_PARAM_INT(E, evasion.local_starts, "-", 0, 100,
+                    "BOBYQA refinements from the best separated sweep cells"),
+    EVADE_PARAM_REAL(E, evasion.local_xtol_rad, "rad", 0.0, 1.0, true,
+                     "BOBYQA stop: step in sin(alpha) and theta"),
+    EVADE_PARAM_INT(E, evasion.certify_max_cells, "-", 0, 100000000,
+                    "lower-bound computations of the certificate (0: no certificate)"),
+    EVADE_PARAM_REAL(E, evasion.certify_rel_tol, "-", 0.0, 0.5, true,
+                     "certified when no direction's arc can be below (1 - tol) x best"),
     EVADE_PARAM_REAL(E, elimination.tol_mps, "m/s", 1e-6, 1e3, false,
                      "bisection tolerance of the eliminating V_E"),
 };
@@ -97,6 +113,7 @@ ThreatOptions ThreatOptionParams::options() const {
 
 EvasionOptions EvasionParams::options() const {
   EvasionOptions o;
+  o.use_isres = evasion.use_isres;
   o.population = evasion.population;
   o.max_evaluations = evasion.max_evaluations;
   o.seed = evasion.seed;
@@ -104,6 +121,13 @@ EvasionOptions EvasionParams::options() const {
   o.alpha_max_rad = evasion.alpha_max_deg * kDegToRad;
   o.theta_min_rad = evasion.theta_min_deg * kDegToRad;
   o.theta_max_rad = evasion.theta_max_deg * kDegToRad;
+  o.sweep_alpha_cells = evasion.sweep_alpha_cells;
+  o.sweep_theta_cells = evasion.sweep_theta_cells;
+  o.sweep_edge_tol_s = evasion.sweep_edge_tol_s;
+  o.local_starts = evasion.local_starts;
+  o.local_xtol_rad = evasion.local_xtol_rad;
+  o.certify_max_cells = evasion.certify_max_cells;
+  o.certify_rel_tol = evasion.certify_rel_tol;
   return o;
 }
 

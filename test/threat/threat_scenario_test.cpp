@@ -122,7 +122,19 @@ TEST(ThreatParams, ValidateNamesTheKeyAndDefaultsAreValid) {
   EXPECT_EQ(std::string(threat_option_params().begin()->spec.key), "chaser.dv_max_mps");
   EXPECT_EQ(threat_geometry_params().size(), 2u);
   EXPECT_EQ(threat_option_params().size(), 6u);
-  EXPECT_EQ(evasion_params().size(), 9u);
+  EXPECT_EQ(evasion_params().size(), 17u);
+  // The table's defaults are the optimizer's defaults.
+  const EvasionOptions from_table = EvasionParams{}.options();
+  const EvasionOptions defaults;
+  EXPECT_EQ(from_table.use_isres, defaults.use_isres);
+  EXPECT_EQ(from_table.max_evaluations, defaults.max_evaluations);
+  EXPECT_EQ(from_table.sweep_alpha_cells, defaults.sweep_alpha_cells);
+  EXPECT_EQ(from_table.sweep_theta_cells, defaults.sweep_theta_cells);
+  EXPECT_EQ(from_table.sweep_edge_tol_s, defaults.sweep_edge_tol_s);
+  EXPECT_EQ(from_table.local_starts, defaults.local_starts);
+  EXPECT_EQ(from_table.local_xtol_rad, defaults.local_xtol_rad);
+  EXPECT_EQ(from_table.certify_max_cells, defaults.certify_max_cells);
+  EXPECT_EQ(from_table.certify_rel_tol, defaults.certify_rel_tol);
 }
 
 }  // namespace

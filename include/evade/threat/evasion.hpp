@@ -36,15 +36,36 @@ Vec3 evasion_dv_vvlh(double dv_mps, double alpha_rad, double theta_rad);
 Vec3 evasion_dv_rsw(double dv_mps, double alpha_rad, double theta_rad);
 
 struct EvasionOptions {
+  bool use_isres = false;         ///< NLopt GN_ISRES instead of the sweep search
   int population = 60;            ///< ISRES population (paper's GA: 60)
-  int max_evaluations = 1200;     ///< ≈ 60 × 20 generations
-  std::uint64_t seed = 1;         ///< NLopt RNG seed (reproducible runs; up to 2^53)
+  int max_evaluations = 1200;     ///< cap of exact arc evaluations (ISRES: ≈ 60 × 20)
+  std::uint64_t seed = 1;         ///< ISRES RNG seed / the sweep's sample position in a cell
+  int sweep_alpha_cells = 8;      ///< sweep cells in sin α
+  int sweep_theta_cells = 16;     ///< sweep cells in θ (≥ 4: cells narrower than 90°)
+  double sweep_edge_tol_s = 2.0;  ///< edge tolerance of the sweep's evaluations (ranking only)
+  int local_starts = 3;           ///< BOBYQA refinements from the best separated cells
+  double local_xtol_rad = 1e-4;   ///< BOBYQA stop: step in sin α and θ [rad]
+  int certify_max_cells = 3000;   ///< lower-bound computations of the certificate; 0: none
+  double certify_rel_tol = 1e-3;  ///< a cell is closed when its bound ≥ (1 − tol) × best
   double alpha_min_rad = -1.5707963267948966;
   double alpha_max_rad = 1.5707963267948966;
   double theta_min_rad = -3.141592653589793;
   double theta_max_rad = 3.141592653589793;
   /// Stop as soon as the arc is ≤ this [s] (elimination search uses 0); < 0 disables.
   double stop_arc_s = -1.0;
+};
+
+/// How the sweep search's result was certified (zeros for ISRES and for V_E = 0).
+struct SearchCertificate {
+  long grid_evaluations = 0;   ///< exact evaluations of the sweep
+  long local_evaluations = 0;  ///< exact evaluations of the BOBYQA refinements
+  int local_starts = 0;
+  double local_spread_s = 0.0;     ///< largest − smallest arc of the refinements
+  double lower_bound_arc_s = 0.0;  ///< no direction of the box has an arc below this
+  long bound_cells = 0;            ///< lower bounds computed (sweep cells and their splits)
+  long open_cells = 0;             ///< cells still below (1 − tol) × best at the end
+  bool certified = false;          ///< lower_bound ≥ (1 − certify_rel_tol) × best arc
+  double certify_runtime_s = 0.0;  ///< wall time of the certificate (part of runtime_s)
 };
 
 struct EvasionResult {
@@ -56,6 +77,8 @@ struct EvasionResult {
   ThreatArea area;                ///< threat area for the best direction
   long evaluations = 0;           ///< threat-area evaluations spent
   DecisionCounts counts;          ///< decisions over all evaluations
+  SearchCertificate certificate;  ///< sweep search only
+  double runtime_s = 0.0;         ///< wall time of the search
 };
 
 /// Minimizes the threat arc over the burn direction at fixed V_E. V_E = 0 needs no search

@@ -61,6 +61,7 @@ struct ThreatOptionParams {
 struct EvasionParams {
   struct Evasion {
     double dv_mps = 20.0;  ///< V_E of the single optimization (the paper's timing case)
+    bool use_isres = false;
     int population = 60;
     int max_evaluations = 1200;
     std::uint64_t seed = 1;
@@ -68,6 +69,13 @@ struct EvasionParams {
     double alpha_max_deg = 90.0;
     double theta_min_deg = -180.0;
     double theta_max_deg = 180.0;
+    int sweep_alpha_cells = 8;
+    int sweep_theta_cells = 16;
+    double sweep_edge_tol_s = 2.0;
+    int local_starts = 3;
+    double local_xtol_rad = 1e-4;
+    int certify_max_cells = 3000;
+    double certify_rel_tol = 1e-3;
   } evasion;
   struct Elimination {
     double tol_mps = 0.05;
@@ -84,8 +92,9 @@ ParamTable<ThreatGeometryParams> threat_geometry_params() noexcept;
 /// chaser.dv_max_mps, transfer.dt_s, transfer.impulses, sweep.step_s, sweep.edge_tol_s,
 /// sweep.threads.
 ParamTable<ThreatOptionParams> threat_option_params() noexcept;
-/// evasion.dv_mps, evasion.population, evasion.max_evaluations, evasion.seed,
-/// evasion.{alpha,theta}_{min,max}_deg, elimination.tol_mps.
+/// evasion.dv_mps, evasion.use_isres, evasion.population, evasion.max_evaluations,
+/// evasion.seed, evasion.{alpha,theta}_{min,max}_deg, the sweep search's evasion.sweep_*,
+/// evasion.local_*, evasion.certify_*, and elimination.tol_mps.
 ParamTable<EvasionParams> evasion_params() noexcept;
 
 }  // namespace evade::threat
