@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli.hpp"
+#include "evade/assessment/assess_params.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
@@ -60,6 +61,8 @@ std::string parameters_markdown() {
                 formation::maneuver_timing_params());
   md += section("Formation propagation (paper 003)", "`evade plan formation`", "propagation.",
                 formation::propagation_params());
+  md += section("Conjunction assessment (issue 12)", "`evade assess`",
+                "assessment.", assessment::assess_params());
   return md;
 }
 

@@ -15,8 +15,6 @@ const Param<AssessConfig> kRows[] = {
                      "Monte Carlo window half-width (k sigma_max + HBR) / v_rel, at most P/2"),
     EVADE_PARAM_REAL(AssessConfig, tca_search_s, "s", 0.0, 86400.0, false,
                      "largest shift from the given state epoch to the local TCA (0: use the states as given)"),
-    EVADE_PARAM_REAL(AssessConfig, cam_max_dv_mps, "m/s", 0.0, 100.0, true,
-                     "bound on each RTN component of the avoidance burn"),
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Parameters of conjunction assessment and of the avoidance-manoeuvre planner (key prefix
+// Parameters of conjunction assessment (key prefix
 // "assessment."), read with config::read_params; the one place their ranges live.
 #pragma once
 
@@ -12,7 +12,6 @@ struct AssessConfig {
   double short_term_max_vel_sigma_ratio = 0.1;  ///< sigma(relative speed) / relative speed allowed
   double mc_window_sigmas = 8.0;                ///< MC window: (k sigma_max + HBR) / v_rel
   double tca_search_s = 600.0;                  ///< largest shift from the given epoch to TCA [s]
-  double cam_max_dv_mps = 5.0;                  ///< largest manoeuvre component searched [m/s]
 };
 
 ParamTable<AssessConfig> assess_params() noexcept;

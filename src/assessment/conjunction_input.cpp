@@ -1,0 +1,90 @@
+// Conjunction readers (include/evade/assessment/conjunction_input.hpp).
+#include "evade/assessment/conjunction_input.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "evade/assessment/covariance.hpp"
+#include "evade/config/read_params.hpp"
+
+namespace evade::assessment {
+namespace {
+
+// A 3x3 or 6x6 nested list at key.
+Mat6 read_matrix(const config::Scenario& sc, const std::string& key, bool* six) {
+  const std::size_t n = sc.list_size(key);
+  if (n != 3 && n != 6) {
+    throw config::ConfigError(sc.source() + ": key '" + key +
+                              "': expected a 3x3 or 6x6 nested list, found " +
+                              std::to_string(n) + " rows");
+  }
+  Mat6 m = Mat6::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string row = key + "." + std::to_string(i);
+    const std::vector<double> v = sc.get_double_list(row, -1e20, 1e20, n);
+    if (v.size() != n) {
+      throw config::ConfigError(sc.source() + ": key '" + row + "': expected " +
+                                std::to_string(n) + " numbers, found " + std::to_string(v.size()));
+    }
+    for (std::size_t j = 0; j < n; ++j) m(static_cast<int>(i), static_cast<int>(j)) = v[j];
+  }
+  *six = n == 6;
+  return m;
+}
+
+ObjectState read_object(const config::Scenario& sc, const std::string& p, const std::string& name) {
+  ObjectState o;
+  o.name = name;
+  o.state.r_eci_m = sc.get_vec3(p + ".r_eci_m", -1e9, 1e9);
+  o.state.v_eci_mps = sc.get_vec3(p + ".v_eci_mps", -1e6, 1e6);
+  const bool eci = sc.has(p + ".cov_eci_m2"), rtn = sc.has(p + ".cov_rtn_m2");
+  if (eci == rtn) {
+    throw config::ConfigError(sc.source() + ": key '" + p +
+                              "': expected exactly one of cov_eci_m2 or cov_rtn_m2");
+  }
+  bool six = false;
+  const Mat6 m = read_matrix(sc, p + (eci ? ".cov_eci_m2" : ".cov_rtn_m2"), &six);
+  o.has_velocity_cov = six;
+  o.cov_eci = eci ? m : cov_eci_from_rtn(m, o.state);
+  return o;
+}
+
+}  // namespace
+
+ConjunctionInput read_conjunction_scenario(const config::Scenario& sc) {
+  ConjunctionInput in;
+  in.hbr_m = sc.get_double("conjunction.hbr_m", 1e-3, 1e4);
+  in.obj[0] = read_object(sc, "conjunction.object1", "object1");
+  in.obj[1] = read_object(sc, "conjunction.object2", "object2");
+  in.earth = config::read_earth(sc);
+  return in;
+}
+
+ConjunctionInput conjunction_from_cdm(const Cdm& cdm, double hbr_m, const EarthModel& earth) {
+  ConjunctionInput in;
+  in.earth = earth;
+  in.hbr_m = hbr_m;
+  if (!(hbr_m > 0.0)) {
+    const std::string a1 = cdm_value(cdm.object[0].additional_parameters, "AREA_PC");
+    const std::string a2 = cdm_value(cdm.object[1].additional_parameters, "AREA_PC");
+    if (a1.empty() || a2.empty()) {
+      throw std::invalid_argument(
+          "CDM: no hard-body radius: give --hbr-m, or AREA_PC for both objects");
+    }
+    in.hbr_m = std::sqrt(std::strtod(a1.c_str(), nullptr) / kPi) +
+               std::sqrt(std::strtod(a2.c_str(), nullptr) / kPi);
+  }
+  for (int i = 0; i < 2; ++i) {
+    const std::string frame = cdm_value(cdm.object[i].metadata, "REF_FRAME");
+    if (frame == "ITRF") {
+      throw std::invalid_argument("CDM: REF_FRAME = ITRF is not supported (EME2000 or GCRF)");
+    }
+    in.obj[i].name = cdm_value(cdm.object[i].metadata, "OBJECT_NAME");
+    in.obj[i].state = cdm_state(cdm, i);
+    in.obj[i].cov_eci = cov_eci_from_rtn(cdm_cov_rtn(cdm, i), in.obj[i].state);
+    in.obj[i].has_velocity_cov = true;
+  }
+  return in;
+}
+
+}  // namespace evade::assessment
