@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "evade/distributed/distributed_monte_carlo.hpp"
 #include "evade/guidance/guidance_law.hpp"
 #include "evade/lcm_link/realtime_lcm_link.hpp"
 #include "evade/lcm_link/sim_lcm_endpoint.hpp"
@@ -202,8 +203,9 @@ nlohmann::json result_json(const SimOptions& o, const sim::SimResult& r,
   return j;
 }
 
-// --runs: the Monte Carlo over noise seeds (in-process guidance), progress on stderr.
-void add_monte_carlo(const SimOptions& o, const sim::SimConfig& cfg, nlohmann::json* j) {
+// --runs: the Monte Carlo over noise seeds (in-process guidance), progress on stderr. Under
+// `mpirun -np N` the runs are split between the ranks; false on the ranks other than 0.
+bool add_monte_carlo(const SimOptions& o, const sim::SimConfig& cfg, nlohmann::json* j) {
   if (!o.lcm_url.empty()) throw std::invalid_argument("--runs cannot be combined with --lcm");
   std::mutex mu;
   auto progress = [&mu](int done, int total) {
@@ -212,9 +214,12 @@ void add_monte_carlo(const SimOptions& o, const sim::SimConfig& cfg, nlohmann::j
       std::fprintf(stderr, "evade sim: monte carlo %d/%d\n", done, total);
     }
   };
-  const sim::MonteCarloResult mc = sim::run_monte_carlo(
-      cfg, o.runs, static_cast<std::uint64_t>(o.seed), o.threads, progress);
+  const distributed::MpiSession mpi;  // one process unless started by mpirun
+  const sim::MonteCarloResult mc = distributed::run_monte_carlo_distributed(
+      cfg, o.runs, static_cast<std::uint64_t>(o.seed), o.threads, mpi, progress);
+  if (mpi.rank() != 0) return false;
   (*j)["runs"] = o.runs;
+  (*j)["ranks"] = mpi.size();
   (*j)["seed"] = o.seed;
   (*j)["miss_m_min"] = mc.miss_min_m;
   (*j)["miss_m_p5"] = mc.miss_p5_m;
@@ -222,6 +227,7 @@ void add_monte_carlo(const SimOptions& o, const sim::SimConfig& cfg, nlohmann::j
   (*j)["miss_m_p95"] = mc.miss_p95_m;
   (*j)["miss_m_max"] = mc.miss_max_m;
   (*j)["miss_m_mean"] = mc.miss_mean_m;
+  return true;
 }
 
 std::string script_path(const char* name) {
@@ -290,7 +296,7 @@ int run_sim(const SimOptions& o) {
   }
   nlohmann::json j = result_json(o, r, cfg, sc);
   if (rt) add_realtime(*rt, &j);
-  if (o.runs > 0) add_monte_carlo(o, cfg, &j);
+  if (o.runs > 0 && !add_monte_carlo(o, cfg, &j)) return 0;  // MPI rank > 0: rank 0 prints
   j["scenario_used"] = sc.used();
   if (!o.plot.empty() && !draw_plot(o)) return 1;
 

@@ -14,9 +14,9 @@ namespace evade::conjunction {
 void PopulationOptions::validate() const {
   auto fail = [](const std::string& what) { throw std::invalid_argument("population." + what); };
   if (count > 10'000'000) fail("count = " + std::to_string(count) + " outside [0, 1e7]");
-  if (!(coorbital_fraction >= 0.0 && crossing_fraction >= 0.0 &&
-        coorbital_fraction + crossing_fraction <= 1.0)) {
-    fail("coorbital_fraction + crossing_fraction outside [0, 1], each >= 0");
+  if (!(coorbital_fraction >= 0.0 && crossing_fraction >= 0.0 && tangent_fraction >= 0.0 &&
+        coorbital_fraction + crossing_fraction + tangent_fraction <= 1.0)) {
+    fail("coorbital_fraction + crossing_fraction + tangent_fraction outside [0, 1], each >= 0");
   }
   if (!(span_s >= 0.0) || !std::isfinite(span_s)) fail("span_s outside [0, inf)");
 }
@@ -59,7 +59,8 @@ std::vector<SpaceObject> synthetic_population(const PopulationOptions& opt) {
 
   const auto n_co = static_cast<std::size_t>(std::floor(opt.count * opt.coorbital_fraction / 2.0)) * 2;
   const auto n_cx = static_cast<std::size_t>(std::floor(opt.count * opt.crossing_fraction / 2.0)) * 2;
-  const std::size_t n_bg = opt.count - n_co - n_cx;
+  const auto n_tg = static_cast<std::size_t>(std::floor(opt.count * opt.tangent_fraction / 2.0)) * 2;
+  const std::size_t n_bg = opt.count - n_co - n_cx - n_tg;
   std::vector<SpaceObject> out;
   out.reserve(opt.count);
   for (std::size_t k = 0; k < n_bg; ++k) {
@@ -88,16 +89,17 @@ std::vector<SpaceObject> synthetic_population(const PopulationOptions& opt) {
     out.push_back(a);
     out.push_back(b);
   }
-  for (std::size_t k = 0; k < n_cx / 2; ++k) {
+  // A pair meeting at a random point and time, velocity directions ang_lo..ang_hi apart.
+  auto crossing_pair = [&](std::size_t k, const std::string& prefix, double ang_lo, double ang_hi) {
     const double r = re + uni(400e3, 1200e3);
     Vec3 p(normal(0, 1), normal(0, 1), normal(0, 1));
     p = p.normalized() * r;
     const double t_meet = uni(0.0, opt.span_s);
-    // Two horizontal directions at an angle U(20, 160) deg.
+    // Two horizontal directions at an angle U(ang_lo, ang_hi) deg.
     Vec3 h1 = p.unitOrthogonal();
     const Vec3 h2 = p.normalized().cross(h1);
     const double psi = uni(0.0, kTwoPi);
-    const double ang = uni(20.0, 160.0) * kDegToRad;
+    const double ang = uni(ang_lo, ang_hi) * kDegToRad;
     const Vec3 d1 = std::cos(psi) * h1 + std::sin(psi) * h2;
     const Vec3 d2 = std::cos(psi + ang) * h1 + std::sin(psi + ang) * h2;
     const double vc = std::sqrt(mu / r);
@@ -106,15 +108,17 @@ std::vector<SpaceObject> synthetic_population(const PopulationOptions& opt) {
     StateEci s1{p, vc * d1};
     StateEci s2{p + off, vc * d2};
     SpaceObject a, b;
-    a.name = "cx" + std::to_string(k) + "a";
-    b.name = "cx" + std::to_string(k) + "b";
+    a.name = prefix + std::to_string(k) + "a";
+    b.name = prefix + std::to_string(k) + "b";
     a.state = KeplerOrbit(s1, mu).state_at(-t_meet);
     b.state = KeplerOrbit(s2, mu).state_at(-t_meet);
     size_error(a);
     size_error(b);
     out.push_back(a);
     out.push_back(b);
-  }
+  };
+  for (std::size_t k = 0; k < n_cx / 2; ++k) crossing_pair(k, "cx", 20.0, 160.0);
+  for (std::size_t k = 0; k < n_tg / 2; ++k) crossing_pair(k, "tg", 0.5, 5.0);
   return out;
 }
 

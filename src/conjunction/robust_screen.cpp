@@ -1,7 +1,8 @@
 // Robust all-pairs conjunction screening (issue 6; paper 002 eq. 1-2 for the radii):
 // apogee/perigee filter (Hoots et al. 1984), swept-box grid broad phase, branch-and-bound
 // narrow phase with a rigorous lower bound on the distance, Brent's method on the range
-// rate for the TCA. See robust_screen.hpp for the bounds.
+// rate for the TCA. See robust_screen.hpp for the bounds; under J2 every bound comes from
+// arc_bounds.hpp (proved in docs/VALIDATION.md, "Robust mode under J2: the no-miss bound").
 #include "evade/conjunction/robust_screen.hpp"
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <thread>
 #include <utility>
 
+#include "evade/conjunction/arc_bounds.hpp"
 #include "evade/conjunction/ephemeris.hpp"
 #include "evade/core/earth_params.hpp"
 #include "evade/dynamics/events.hpp"
@@ -21,12 +23,10 @@
 namespace evade::conjunction {
 namespace {
 
-// Osculating radius range and gravity are not constant under J2: the margins below cover
-// the J2 short-period radius oscillation (~10 km in LEO) and the J2 part of the
-// acceleration (<= 3 J2 (Re/r)^2 of mu/r^2) and of its gradient (<= 6 J2 (Re/r)^2 of 2mu/r^3).
-constexpr double kJ2RadiusMarginM = 40e3;
-constexpr double kJ2AccelFactor = 4.0;
-constexpr double kJ2GradientFactor = 10.0;
+// Statistic only (pairs_after_apogee_perigee under J2): an estimate of the J2 short-period
+// radius oscillation (~10 km in LEO). The screening itself uses the proven per-step arc
+// bounds of arc_bounds.hpp under J2, and the exact conic radii under two-body.
+constexpr double kJ2RadiusStatMarginM = 40e3;
 
 struct ObjectBounds {
   double r_min_m = 0.0;   // lower bound on |r| over the span
@@ -34,9 +34,10 @@ struct ObjectBounds {
   double g_max_mps2 = 0.0;  // upper bound on |r''|
 };
 
+// Bounds of every object over the current grid step (ArcBounds: r_lo, r_hi, g, v).
 struct PairContext {
   const std::vector<SpaceObject>* objects = nullptr;
-  const std::vector<ObjectBounds>* bounds = nullptr;
+  const std::vector<ArcBounds>* bounds = nullptr;
   const ScreenOptions* opt = nullptr;
 };
 
@@ -70,18 +71,20 @@ struct NarrowPair {
   std::size_t j = 0;
   double a_crude = 0.0;  // g_i + g_j: crude bound on |rho''|
   double r_min = 0.0;    // smaller lower bound on the two radii
+  double v_obj = 0.0;    // larger bound on the two objects' speeds
   double d_ij = 0.0;     // reporting distance of the pair
   double rc = 0.0;       // collision radius R_c (eq. 1)
 };
 
 NarrowPair narrow_pair(std::size_t i, std::size_t j, double d_ij, const PairContext& ctx) {
-  const ObjectBounds& bi = (*ctx.bounds)[i];
-  const ObjectBounds& bj = (*ctx.bounds)[j];
+  const ArcBounds& bi = (*ctx.bounds)[i];
+  const ArcBounds& bj = (*ctx.bounds)[j];
   NarrowPair p;
   p.i = i;
   p.j = j;
   p.a_crude = bi.g_max_mps2 + bj.g_max_mps2;
-  p.r_min = std::min(bi.r_min_m, bj.r_min_m);
+  p.r_min = std::min(bi.r_lo_m, bj.r_lo_m);
+  p.v_obj = std::max(bi.v_max_mps, bj.v_max_mps);
   p.d_ij = d_ij;
   p.rc = collision_radius_m((*ctx.objects)[i], (*ctx.objects)[j]);
   return p;
@@ -117,8 +120,6 @@ struct IntervalGeometry {
 
 IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const NarrowPair& p,
                                    const ScreenOptions& opt) {
-  const double mu = opt.earth.mu_m3ps2;
-  const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
   IntervalGeometry g;
   g.len = b.t - a.t;
   g.rho_a = a.sj.r_eci_m - a.si.r_eci_m;
@@ -128,16 +129,11 @@ IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const N
   const double chord_dev_crude = p.a_crude * g.len * g.len / 8.0;
   g.r_max = std::max(g.rho_a.norm(), g.rho_b.norm()) + chord_dev_crude;
   // Gravity-gradient bound: |g(r_j) - g(r_i)| <= (2 mu / r^3) |rho| along the segment
-  // between the two objects, whose radius is >= r_min - r_max.
+  // between the two objects, whose radius is >= r_min - r_max (K(r): arc_bounds.hpp).
   g.acc = p.a_crude;
   g.r_seg = p.r_min - g.r_max;
   if (g.r_seg > 0.0) {
-    const double r_seg = g.r_seg;
-    double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
-    if (j2) {
-      const double q = opt.earth.re_m / r_seg;
-      k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
-    }
+    const double k_grad = gravity_gradient_bound_ps2(g.r_seg, opt.gravity, opt.earth);
     g.acc = std::min(g.acc, k_grad * g.r_max);
   }
   return g;
@@ -153,8 +149,6 @@ struct Monotonicity {
 Monotonicity range_rate_monotonicity(const Endpoint& a, const Endpoint& b,
                                      const IntervalGeometry& g, const NarrowPair& p,
                                      const ScreenOptions& opt) {
-  const double mu = opt.earth.mu_m3ps2;
-  const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
   const double len = g.len;
   const double acc = g.acc;
   const double r_max = g.r_max;
@@ -165,16 +159,11 @@ Monotonicity range_rate_monotonicity(const Endpoint& a, const Endpoint& b,
   if (m.monotone || !(g.r_seg > 0.0)) return m;
   // Test 2 (slow pairs): f' = |rho'|^2 + rho.rho'' known at both ends, and
   // |f''| = |3 rho'.rho'' + rho.rho'''| <= B with |rho'''| <= K |rho'| + L |rho| v_max,
-  // L = 24 mu / r^4 (norm of the third derivatives of mu/r) and v_max = sqrt(2 mu / r_min).
+  // K and L of arc_bounds.hpp at the segment's radius, v_max the objects' speed bound.
   const double r_seg = g.r_seg;
-  double l_third = 24.0 * mu / (r_seg * r_seg * r_seg * r_seg);
-  double k_grad = 2.0 * mu / (r_seg * r_seg * r_seg);
-  if (j2) {
-    const double q = opt.earth.re_m / r_seg;
-    l_third *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
-    k_grad *= 1.0 + kJ2GradientFactor * opt.earth.j2 * q * q;
-  }
-  const double v_obj = std::sqrt(2.0 * mu / p.r_min);
+  const double l_third = gravity_hessian_bound(r_seg, opt.gravity, opt.earth);
+  const double k_grad = gravity_gradient_bound_ps2(r_seg, opt.gravity, opt.earth);
+  const double v_obj = p.v_obj;
   const double v_rel_max = std::min(g.vel_a.norm(), g.vel_b.norm()) + acc * len;
   const double b_f2 = 3.0 * v_rel_max * acc + r_max * (k_grad * v_rel_max + l_third * r_max * v_obj);
   auto accel = [&](const Vec3& r) { return accel_eci_mps2(r, opt.gravity, opt.earth); };
@@ -233,6 +222,7 @@ void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const End
     if (lower_bound > d_ij) continue;
     const Monotonicity m = range_rate_monotonicity(a, b, g, p, opt);
     if (m.decreasing) continue;  // f strictly decreasing: no - to + root, no closest approach
+    if (!m.monotone && g.len <= opt.leaf_s) ++st.unproven_leaves;
     if (!m.monotone && g.len > opt.leaf_s) {
       const double tm = a.t + 0.5 * g.len;
       Endpoint mid = pe.at(tm);
@@ -254,21 +244,28 @@ std::vector<ObjectBounds> object_bounds(const std::vector<SpaceObject>& objects,
   const bool j2 = opt.gravity == GravityModel::kTwoBodyJ2;
   for (std::size_t k = 0; k < objects.size(); ++k) {
     const OrbitShape s = orbit_shape(objects[k].state, opt.earth.mu_m3ps2);
-    const double margin = j2 ? kJ2RadiusMarginM : 0.0;
+    const double margin = j2 ? kJ2RadiusStatMarginM : 0.0;
     b[k].r_min_m = std::max(s.perigee_radius_m - margin, 0.5 * s.perigee_radius_m);
     b[k].r_max_m = s.apogee_radius_m + margin;
-    double g = opt.earth.mu_m3ps2 / (b[k].r_min_m * b[k].r_min_m);
-    if (j2) {
-      const double q = opt.earth.re_m / b[k].r_min_m;
-      g *= 1.0 + kJ2AccelFactor * opt.earth.j2 * q * q;
-    }
-    b[k].g_max_mps2 = g;
+    b[k].g_max_mps2 = opt.earth.mu_m3ps2 / (b[k].r_min_m * b[k].r_min_m);
   }
   return b;
 }
 
-bool apogee_perigee_may_meet(const ObjectBounds& a, const ObjectBounds& b, double d) {
-  return std::max(a.r_min_m, b.r_min_m) - std::min(a.r_max_m, b.r_max_m) <= d;
+// Two-body: the conic's radius range holds over the whole span (exact bounds).
+std::vector<ArcBounds> conic_bounds(const std::vector<ObjectBounds>& ob, const EarthModel& earth) {
+  std::vector<ArcBounds> b(ob.size());
+  for (std::size_t k = 0; k < ob.size(); ++k) {
+    b[k].r_lo_m = ob[k].r_min_m;
+    b[k].r_hi_m = ob[k].r_max_m;
+    b[k].g_max_mps2 = ob[k].g_max_mps2;
+    b[k].v_max_mps = std::sqrt(2.0 * earth.mu_m3ps2 / ob[k].r_min_m);
+  }
+  return b;
+}
+
+bool apogee_perigee_may_meet(const ArcBounds& a, const ArcBounds& b, double d) {
+  return std::max(a.r_lo_m, b.r_lo_m) - std::min(a.r_hi_m, b.r_hi_m) <= d;
 }
 
 void sort_events(std::vector<Conjunction>& ev) {
@@ -285,6 +282,7 @@ void add_stats(ScreenStats& into, const ScreenStats& s) {
   into.candidates += s.candidates;
   into.refined += s.refined;
   into.root_solves += s.root_solves;
+  into.unproven_leaves += s.unproven_leaves;
 }
 
 constexpr std::int64_t kCellOffset = 1 << 20;
@@ -301,6 +299,19 @@ std::uint64_t cell_key(std::int64_t ix, std::int64_t iy, std::int64_t iz) {
          static_cast<std::uint64_t>(iz);
 }
 
+double max_reporting_distance_m(const std::vector<SpaceObject>& objects, const ScreenOptions& opt) {
+  double d_max = opt.threshold_m;
+  if (opt.include_warning_radius) {
+    double lmax = 0.0;
+    for (const auto& o : objects) lmax = std::max(lmax, o.size_m + o.pos_error_m);
+    d_max = std::max(d_max, opt.warning_multiple * 2.0 * lmax);
+  }
+  return d_max;
+}
+
+// One worker screens the grid steps [k_begin, k_end). Under J2 its ephemeris first visits
+// every grid time before k_begin, so the integrator's steps (and therefore every state and
+// event) do not depend on how the steps are split between threads or processes.
 struct Worker {
   const std::vector<SpaceObject>* objects;
   const std::vector<ObjectBounds>* bounds;
@@ -312,75 +323,97 @@ struct Worker {
   bool report_progress;
   std::vector<Conjunction> events;
   ScreenStats stats;
+  // Per-step scratch.
+  std::vector<ArcBounds> step_bounds;
+  std::vector<Vec3> lo, hi;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
 
   double grid_time(long k) const {
     return k >= nsteps ? span_s : std::min(static_cast<double>(k) * opt->step_s, span_s);
   }
 
+  // Arc bounds of every object on [t_a, t_a + dt] (J2: arc lemma; two-body: the conic).
+  void update_step_bounds(const std::vector<StateEci>& sa, const std::vector<StateEci>& sb,
+                          double dt) {
+    if (opt->gravity != GravityModel::kTwoBodyJ2) return;  // conic bounds, set once
+    for (std::size_t i = 0; i < sa.size(); ++i)
+      step_bounds[i] = arc_bounds(sa[i], sb[i], dt, opt->gravity, opt->earth);
+  }
+
+  // Swept boxes of the step, padded by g h^2/8 + D/2; returns the grid cell size.
+  double build_boxes(const std::vector<StateEci>& sa, const std::vector<StateEci>& sb,
+                     double dt, double d_max) {
+    double cell = 0.0;
+    for (std::size_t i = 0; i < sa.size(); ++i) {
+      const double pad = step_bounds[i].g_max_mps2 * dt * dt / 8.0 + 0.5 * d_max;
+      lo[i] = sa[i].r_eci_m.cwiseMin(sb[i].r_eci_m).array() - pad;
+      hi[i] = sa[i].r_eci_m.cwiseMax(sb[i].r_eci_m).array() + pad;
+      cell = std::max(cell, (hi[i] - lo[i]).maxCoeff());
+    }
+    entries.clear();
+    for (std::size_t i = 0; i < sa.size(); ++i) {
+      const std::int64_t x0 = cell_index(lo[i].x(), cell), x1 = cell_index(hi[i].x(), cell);
+      const std::int64_t y0 = cell_index(lo[i].y(), cell), y1 = cell_index(hi[i].y(), cell);
+      const std::int64_t z0 = cell_index(lo[i].z(), cell), z1 = cell_index(hi[i].z(), cell);
+      for (std::int64_t x = x0; x <= x1; ++x)
+        for (std::int64_t y = y0; y <= y1; ++y)
+          for (std::int64_t z = z0; z <= z1; ++z)
+            entries.emplace_back(cell_key(x, y, z), static_cast<std::uint32_t>(i));
+    }
+    std::sort(entries.begin(), entries.end());
+    return cell;
+  }
+
+  // Pairs of one grid step: box overlap, counted once, apogee/perigee, narrow phase.
+  void screen_step(const std::vector<StateEci>& sa, const std::vector<StateEci>& sb, double t_a,
+                   double t_b, double cell, Ephemeris& eph) {
+    const PairContext ctx{objects, &step_bounds, opt};
+    for (std::size_t r0 = 0; r0 < entries.size();) {
+      std::size_t r1 = r0 + 1;
+      while (r1 < entries.size() && entries[r1].first == entries[r0].first) ++r1;
+      const std::uint64_t key = entries[r0].first;
+      for (std::size_t p = r0; p < r1; ++p) {
+        for (std::size_t q = p + 1; q < r1; ++q) {
+          ++stats.pairs_checked;
+          std::size_t i = entries[p].second, j = entries[q].second;
+          if (i > j) std::swap(i, j);
+          if ((lo[i].array() > hi[j].array()).any() || (lo[j].array() > hi[i].array()).any())
+            continue;
+          const Vec3 corner = lo[i].cwiseMax(lo[j]);
+          if (cell_key(cell_index(corner.x(), cell), cell_index(corner.y(), cell),
+                       cell_index(corner.z(), cell)) != key)
+            continue;  // counted in the cell that holds the overlap's low corner
+          const double d_ij = pair_threshold_m((*objects)[i], (*objects)[j], *opt);
+          if (!apogee_perigee_may_meet(step_bounds[i], step_bounds[j], d_ij)) continue;
+          ++stats.candidates;
+          narrow_phase(i, j, Endpoint{t_a, sa[i], sa[j]}, Endpoint{t_b, sb[i], sb[j]}, sa[i],
+                       sa[j], t_a, d_ij, ctx, eph, events, stats);
+        }
+      }
+      r0 = r1;
+    }
+  }
+
   void run() {
     const std::size_t n = objects->size();
     Ephemeris eph(*objects, opt->gravity, opt->earth, opt->integ);
-    PairContext ctx{objects, bounds, opt};
-    double d_max = opt->threshold_m;
-    if (opt->include_warning_radius) {
-      double lmax = 0.0;
-      for (const auto& o : *objects) lmax = std::max(lmax, o.size_m + o.pos_error_m);
-      d_max = std::max(d_max, opt->warning_multiple * 2.0 * lmax);
-    }
-    std::vector<StateEci> sa, sb;
-    std::vector<Vec3> lo(n), hi(n);
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    const double d_max = max_reporting_distance_m(*objects, *opt);
+    step_bounds = conic_bounds(*bounds, opt->earth);
+    lo.resize(n);
+    hi.resize(n);
     entries.reserve(8 * n);
+    std::vector<StateEci> sa, sb;
+    const long k_first = opt->gravity == GravityModel::kTwoBodyJ2 ? 0 : k_begin;
+    for (long k = k_first; k <= k_begin; ++k) eph.states_at(grid_time(k), sa);
     double t_a = grid_time(k_begin);
-    eph.states_at(t_a, sa);
     const long progress_every = std::max(1L, (k_end - k_begin) / 100);
     for (long k = k_begin; k < k_end; ++k) {
       const double t_b = grid_time(k + 1);
       eph.states_at(t_b, sb);
       ++stats.steps;
-      const double dt = t_b - t_a;
-      double cell = 0.0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const double pad = (*bounds)[i].g_max_mps2 * dt * dt / 8.0 + 0.5 * d_max;
-        lo[i] = sa[i].r_eci_m.cwiseMin(sb[i].r_eci_m).array() - pad;
-        hi[i] = sa[i].r_eci_m.cwiseMax(sb[i].r_eci_m).array() + pad;
-        cell = std::max(cell, (hi[i] - lo[i]).maxCoeff());
-      }
-      entries.clear();
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::int64_t x0 = cell_index(lo[i].x(), cell), x1 = cell_index(hi[i].x(), cell);
-        const std::int64_t y0 = cell_index(lo[i].y(), cell), y1 = cell_index(hi[i].y(), cell);
-        const std::int64_t z0 = cell_index(lo[i].z(), cell), z1 = cell_index(hi[i].z(), cell);
-        for (std::int64_t x = x0; x <= x1; ++x)
-          for (std::int64_t y = y0; y <= y1; ++y)
-            for (std::int64_t z = z0; z <= z1; ++z)
-              entries.emplace_back(cell_key(x, y, z), static_cast<std::uint32_t>(i));
-      }
-      std::sort(entries.begin(), entries.end());
-      for (std::size_t r0 = 0; r0 < entries.size();) {
-        std::size_t r1 = r0 + 1;
-        while (r1 < entries.size() && entries[r1].first == entries[r0].first) ++r1;
-        const std::uint64_t key = entries[r0].first;
-        for (std::size_t p = r0; p < r1; ++p) {
-          for (std::size_t q = p + 1; q < r1; ++q) {
-            ++stats.pairs_checked;
-            std::size_t i = entries[p].second, j = entries[q].second;
-            if (i > j) std::swap(i, j);
-            if ((lo[i].array() > hi[j].array()).any() || (lo[j].array() > hi[i].array()).any())
-              continue;
-            const Vec3 corner = lo[i].cwiseMax(lo[j]);
-            if (cell_key(cell_index(corner.x(), cell), cell_index(corner.y(), cell),
-                         cell_index(corner.z(), cell)) != key)
-              continue;  // counted in the cell that holds the overlap's low corner
-            const double d_ij = pair_threshold_m((*objects)[i], (*objects)[j], *opt);
-            if (!apogee_perigee_may_meet((*bounds)[i], (*bounds)[j], d_ij)) continue;
-            ++stats.candidates;
-            narrow_phase(i, j, Endpoint{t_a, sa[i], sa[j]}, Endpoint{t_b, sb[i], sb[j]}, sa[i],
-                         sa[j], t_a, d_ij, ctx, eph, events, stats);
-          }
-        }
-        r0 = r1;
-      }
+      update_step_bounds(sa, sb, t_b - t_a);
+      const double cell = build_boxes(sa, sb, t_b - t_a, d_max);
+      screen_step(sa, sb, t_a, t_b, cell, eph);
       std::swap(sa, sb);
       t_a = t_b;
       if (report_progress && opt->progress && ((k - k_begin + 1) % progress_every == 0)) {
@@ -427,71 +460,105 @@ double auto_step_s(std::size_t n_objects) {
   return std::clamp(60.0 * std::cbrt(10000.0 / n), 10.0, 120.0);
 }
 
-ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
-                           const ScreenOptions& opt_in) {
+namespace {
+
+// Statistic only: pairs whose radius ranges come within D_max of each other, counted in
+// O(N log N) (sorted perigee radii, binary search) rather than over all N^2 pairs.
+long count_apogee_perigee_pairs(const std::vector<ObjectBounds>& bounds, double d_max) {
+  const std::size_t n = bounds.size();
+  std::vector<std::pair<double, double>> ranges(n);
+  for (std::size_t i = 0; i < n; ++i) ranges[i] = {bounds[i].r_min_m, bounds[i].r_max_m};
+  std::sort(ranges.begin(), ranges.end());
+  long count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double reach = ranges[i].second + d_max;
+    const auto last = std::upper_bound(ranges.begin() + static_cast<long>(i) + 1, ranges.end(),
+                                       std::make_pair(reach, std::numeric_limits<double>::infinity()));
+    count += last - (ranges.begin() + static_cast<long>(i) + 1);
+  }
+  return count;
+}
+
+void run_workers(std::vector<Worker>& workers) {
+  if (workers.size() == 1) {
+    workers[0].run();
+    return;
+  }
+  std::vector<std::thread> threads;
+  std::vector<std::exception_ptr> errors(workers.size());
+  for (std::size_t w = 0; w < workers.size(); ++w) {
+    threads.emplace_back([&workers, &errors, w]() {
+      try {
+        workers[w].run();
+      } catch (...) {
+        errors[w] = std::current_exception();
+      }
+    });
+  }
+  for (auto& t : threads) t.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace
+
+long screen_grid_steps(double span_s, const ScreenOptions& opt, std::size_t n_objects) {
+  const double step = opt.step_s == 0.0 ? auto_step_s(n_objects) : opt.step_s;
+  return static_cast<long>(std::ceil(span_s / step - 1e-12));
+}
+
+ScreenResult screen_robust_part(const std::vector<SpaceObject>& objects, double span_s,
+                                const ScreenOptions& opt_in, int part, int parts) {
   opt_in.validate();
   ScreenOptions opt = opt_in;
   if (opt.step_s == 0.0) opt.step_s = auto_step_s(objects.size());
   if (!(span_s > 0.0) || !std::isfinite(span_s)) {
     throw std::invalid_argument("span_s = " + std::to_string(span_s) + " outside (0, inf)");
   }
+  if (parts < 1 || part < 0 || part >= parts) {
+    throw std::invalid_argument("screen part " + std::to_string(part) + " of " +
+                                std::to_string(parts) + " outside [0, parts)");
+  }
   validate_objects(objects, opt.earth);
   ScreenResult res;
   const std::vector<ObjectBounds> bounds = object_bounds(objects, opt);
-  const std::size_t n = objects.size();
-  {
-    // Statistic only: pairs whose radius ranges come within D_max of each other, counted in
-    // O(N log N) (sorted perigee radii, binary search) rather than over all N^2 pairs.
-    double d_max = opt.threshold_m;
-    if (opt.include_warning_radius) {
-      double lmax = 0.0;
-      for (const auto& o : objects) lmax = std::max(lmax, o.size_m + o.pos_error_m);
-      d_max = std::max(d_max, opt.warning_multiple * 2.0 * lmax);
-    }
-    std::vector<std::pair<double, double>> ranges(n);
-    for (std::size_t i = 0; i < n; ++i) ranges[i] = {bounds[i].r_min_m, bounds[i].r_max_m};
-    std::sort(ranges.begin(), ranges.end());
-    for (std::size_t i = 0; i < n; ++i) {
-      const double reach = ranges[i].second + d_max;
-      const auto last = std::upper_bound(ranges.begin() + static_cast<long>(i) + 1, ranges.end(),
-                                         std::make_pair(reach, std::numeric_limits<double>::infinity()));
-      res.stats.pairs_after_apogee_perigee += last - (ranges.begin() + static_cast<long>(i) + 1);
-    }
+  if (part == 0) {
+    res.stats.pairs_after_apogee_perigee =
+        count_apogee_perigee_pairs(bounds, max_reporting_distance_m(objects, opt));
   }
-  if (n < 2) return res;
-  const long nsteps = static_cast<long>(std::ceil(span_s / opt.step_s - 1e-12));
-  const int nthreads = static_cast<int>(std::min<long>(opt.threads, std::max(1L, nsteps)));
+  if (objects.size() < 2) return res;
+  const long nsteps = screen_grid_steps(span_s, opt, objects.size());
+  const long p_begin = nsteps * part / parts;
+  const long p_end = nsteps * (part + 1) / parts;
+  const long p_steps = p_end - p_begin;
+  const int nthreads = static_cast<int>(std::min<long>(opt.threads, std::max(1L, p_steps)));
   std::vector<Worker> workers;
   workers.reserve(nthreads);
   for (int w = 0; w < nthreads; ++w) {
-    const long k0 = nsteps * w / nthreads;
-    const long k1 = nsteps * (w + 1) / nthreads;
-    workers.push_back(Worker{&objects, &bounds, &opt, span_s, nsteps, k0, k1, w == 0, {}, {}});
+    const long k0 = p_begin + p_steps * w / nthreads;
+    const long k1 = p_begin + p_steps * (w + 1) / nthreads;
+    workers.push_back(Worker{&objects, &bounds, &opt, span_s, nsteps, k0, k1, w == 0, {}, {},
+                             {}, {}, {}, {}});
   }
-  if (nthreads == 1) {
-    workers[0].run();
-  } else {
-    std::vector<std::thread> threads;
-    std::vector<std::exception_ptr> errors(nthreads);
-    for (int w = 0; w < nthreads; ++w) {
-      threads.emplace_back([&workers, &errors, w]() {
-        try {
-          workers[w].run();
-        } catch (...) {
-          errors[w] = std::current_exception();
-        }
-      });
-    }
-    for (auto& t : threads) t.join();
-    for (auto& e : errors)
-      if (e) std::rethrow_exception(e);
-  }
+  if (p_steps > 0) run_workers(workers);
   for (auto& w : workers) {
     res.events.insert(res.events.end(), w.events.begin(), w.events.end());
     add_stats(res.stats, w.stats);
   }
   sort_events(res.events);
   return res;
+}
+
+ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
+                           const ScreenOptions& opt) {
+  return screen_robust_part(objects, span_s, opt, 0, 1);
+}
+
+void merge_screen_results(ScreenResult& into, const ScreenResult& part) {
+  into.events.insert(into.events.end(), part.events.begin(), part.events.end());
+  add_stats(into.stats, part.stats);
+  into.stats.pairs_after_apogee_perigee += part.stats.pairs_after_apogee_perigee;
+  sort_events(into.events);
 }
 
 ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double span_s,

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 namespace evade::sim {
 
@@ -32,13 +33,17 @@ double percentile(std::vector<double> values, double p) {
   return values[lo] + frac * (values[hi] - values[lo]);
 }
 
-MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t seed,
-                                 int threads, const std::function<void(int, int)>& on_done) {
-  if (runs < 1) throw std::invalid_argument("monte carlo: runs = " + std::to_string(runs) +
-                                            " outside [1, inf)");
+MonteCarloRuns run_monte_carlo_range(const SimConfig& base, int run_begin, int run_end,
+                                     std::uint64_t seed, int threads,
+                                     const std::function<void(int, int)>& on_done) {
+  if (run_begin < 0 || run_end < run_begin) {
+    throw std::invalid_argument("monte carlo: run range [" + std::to_string(run_begin) + ", " +
+                                std::to_string(run_end) + ") is not a range of run indices");
+  }
   base.validate();
-  threads = std::max(1, std::min(threads, runs));
-  MonteCarloResult r;
+  const int runs = run_end - run_begin;
+  threads = std::max(1, std::min(threads, std::max(runs, 1)));
+  MonteCarloRuns r;
   r.miss_m.assign(static_cast<std::size_t>(runs), 0.0);
   r.dv_mps.assign(static_cast<std::size_t>(runs), 0.0);
   std::atomic<int> next{0};
@@ -47,18 +52,19 @@ MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t 
   std::exception_ptr error;
   auto worker = [&]() {
     for (;;) {
-      const int i = next.fetch_add(1);
-      if (i >= runs) return;
+      const int k = next.fetch_add(1);
+      if (k >= runs) return;
       try {
+        const auto i = static_cast<std::uint64_t>(run_begin + k);  // the run index
         SimConfig c = base;
-        c.sensor.seed = splitmix64(seed, 2 * static_cast<std::uint64_t>(i));
-        c.actuator.seed = splitmix64(seed, 2 * static_cast<std::uint64_t>(i) + 1);
+        c.sensor.seed = splitmix64(seed, 2 * i);
+        c.actuator.seed = splitmix64(seed, 2 * i + 1);
         auto ep = make_in_process_endpoint(c.guidance, c.guidance.armed);
         const SimResult s = run_simulation(c, *ep);
         if (!s.closest_approach_found) throw std::runtime_error("no closest approach found");
         std::lock_guard<std::mutex> lock(mu);
-        r.miss_m[static_cast<std::size_t>(i)] = s.miss_m;
-        r.dv_mps[static_cast<std::size_t>(i)] = s.dv_mps;
+        r.miss_m[static_cast<std::size_t>(k)] = s.miss_m;
+        r.dv_mps[static_cast<std::size_t>(k)] = s.dv_mps;
         ++done;
         if (on_done) on_done(done, runs);
       } catch (...) {
@@ -74,6 +80,16 @@ MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t 
   worker();
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+  return r;
+}
+
+MonteCarloResult summarize_monte_carlo(std::vector<double> miss_m, std::vector<double> dv_mps) {
+  if (miss_m.empty() || miss_m.size() != dv_mps.size()) {
+    throw std::invalid_argument("monte carlo: no runs to summarize");
+  }
+  MonteCarloResult r;
+  r.miss_m = std::move(miss_m);
+  r.dv_mps = std::move(dv_mps);
   r.miss_min_m = *std::min_element(r.miss_m.begin(), r.miss_m.end());
   r.miss_max_m = *std::max_element(r.miss_m.begin(), r.miss_m.end());
   r.miss_p5_m = percentile(r.miss_m, 5.0);
@@ -81,8 +97,16 @@ MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t 
   r.miss_p95_m = percentile(r.miss_m, 95.0);
   double sum = 0.0;
   for (double m : r.miss_m) sum += m;
-  r.miss_mean_m = sum / static_cast<double>(runs);
+  r.miss_mean_m = sum / static_cast<double>(r.miss_m.size());
   return r;
+}
+
+MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t seed,
+                                 int threads, const std::function<void(int, int)>& on_done) {
+  if (runs < 1) throw std::invalid_argument("monte carlo: runs = " + std::to_string(runs) +
+                                            " outside [1, inf)");
+  MonteCarloRuns r = run_monte_carlo_range(base, 0, runs, seed, threads, on_done);
+  return summarize_monte_carlo(std::move(r.miss_m), std::move(r.dv_mps));
 }
 
 }  // namespace evade::sim

@@ -18,6 +18,9 @@
 //    displaced at the meeting time by U(0, 3000) m in a random direction; both are
 //    propagated back (two-body) to t = 0. Their closest approach is near the meeting time,
 //    with a km/s relative speed.
+//  * near-tangent pairs (tangent_fraction, two per pair, default 0): as the crossing pairs
+//    but with velocity directions U(0.5, 5) deg apart (relative speeds of 65..660 m/s, long
+//    shallow encounters), named "tg<k>a/b", drawn after all the others.
 //  * sizes: log-uniform 0.1..10 m; position errors: uniform 10..100 m.
 #pragma once
 
@@ -33,6 +36,7 @@ struct PopulationOptions {
   std::uint64_t seed = 1;
   double coorbital_fraction = 0.05;
   double crossing_fraction = 0.05;
+  double tangent_fraction = 0.0;
   double span_s = 86400.0;  ///< meeting times of the crossing pairs are drawn in [0, span_s]
   EarthModel earth = kEarthDefault;
   /// Throws std::invalid_argument naming the option.

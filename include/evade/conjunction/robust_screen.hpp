@@ -21,8 +21,11 @@
 //   at most one root in [a, b], and a closest approach exists iff f(a) < 0 <= f(b); it is
 //   located by Brent's method (events.hpp) on f and kept if its miss is <= D. If f cannot
 //   be shown monotone (slow co-orbital pairs), [a, b] is halved down to leaf_s and the sign
-//   test is applied on each leaf (docs/VALIDATION.md bounds what that can miss).
-// The steps are split between threads (std::thread); events are merged and sorted.
+//   test is applied on each leaf (counted as unproven_leaves; docs/VALIDATION.md).
+// Under two-body + J2 the radius range, g, K, L and the speed bound of every object come per
+// grid step from the arc lemma of arc_bounds.hpp (proved in docs/VALIDATION.md).
+// The steps are split between threads (std::thread), and between processes by
+// screen_robust_part; events are merged and sorted. Results do not depend on the split.
 #pragma once
 
 #include <cstddef>
@@ -65,6 +68,7 @@ struct ScreenStats {
   long refined = 0;               ///< intervals examined by the narrow phase
   long root_solves = 0;           ///< Brent solves on the range rate
   long pairs_after_apogee_perigee = 0;  ///< pairs whose radius ranges overlap within max D_ij
+  long unproven_leaves = 0;       ///< leaves where f could not be shown monotone
 };
 
 struct ScreenResult {
@@ -81,6 +85,18 @@ double auto_step_s(std::size_t n_objects);
 /// Screens [0, span_s]. Objects are validated first (std::invalid_argument on bad input).
 ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
                            const ScreenOptions& opt);
+
+/// Number of grid steps of a screening of span_s (the unit that parts are made of).
+long screen_grid_steps(double span_s, const ScreenOptions& opt, std::size_t n_objects);
+
+/// Part `part` of `parts` (0 <= part < parts) of screen_robust: the grid steps
+/// [K part / parts, K (part + 1) / parts) of the K steps. Merging every part's result
+/// (merge_screen_results) gives exactly screen_robust's events and stats.
+ScreenResult screen_robust_part(const std::vector<SpaceObject>& objects, double span_s,
+                                const ScreenOptions& opt, int part, int parts);
+
+/// Appends part's events (re-sorted) and adds its statistics.
+void merge_screen_results(ScreenResult& into, const ScreenResult& part);
 
 /// Reference: every pair sampled every sample_step_s; a sign change - to + of the range
 /// rate between samples is refined by Brent's method; kept if miss <= D_ij. O(N^2 T).

@@ -1,7 +1,8 @@
 // Monte Carlo over sensor/actuator noise seeds for the paper-000 evasion simulation (the
 // paper's sec. 5 asks for the effect of measurement errors). Runs are spread over threads;
 // run i uses sensor seed splitmix64(seed, 2i) and actuator seed splitmix64(seed, 2i+1), so
-// results do not depend on the thread count.
+// results do not depend on the thread count, and a range of run indices can be run alone
+// (by another process: src/distributed/) and summarized with the others.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +24,12 @@ struct MonteCarloResult {
   double miss_mean_m = 0.0;
 };
 
+/// Per-run results of a range of run indices, in run order.
+struct MonteCarloRuns {
+  std::vector<double> miss_m;
+  std::vector<double> dv_mps;
+};
+
 /// Percentile p ∈ [0, 100] with linear interpolation between order statistics (R type 7).
 double percentile(std::vector<double> values, double p);
 
@@ -31,5 +38,15 @@ double percentile(std::vector<double> values, double p);
 MonteCarloResult run_monte_carlo(const SimConfig& base, int runs, std::uint64_t seed,
                                  int threads,
                                  const std::function<void(int, int)>& on_done = {});
+
+/// Runs run indices [run_begin, run_end) (seeds from the run index, as run_monte_carlo);
+/// on_done(done, run_end - run_begin).
+MonteCarloRuns run_monte_carlo_range(const SimConfig& base, int run_begin, int run_end,
+                                     std::uint64_t seed, int threads,
+                                     const std::function<void(int, int)>& on_done = {});
+
+/// Percentiles, extremes and mean of per-run results in run order (the run_monte_carlo
+/// summary). Throws std::invalid_argument when empty or of different sizes.
+MonteCarloResult summarize_monte_carlo(std::vector<double> miss_m, std::vector<double> dv_mps);
 
 }  // namespace evade::sim

@@ -1,0 +1,68 @@
+// Proven per-arc bounds for the robust screener under two-body and two-body + J2 gravity
+// (issue 13). Sources: J2 acceleration, Vallado, Fundamentals of Astrodynamics, 4th ed.,
+// eq. 8-30; interpolation and Taylor remainders, e.g. Atkinson, An Introduction to
+// Numerical Analysis, 2nd ed., thm. 3.2 and eq. 1.1.6. The constants 3, 42 and 40 and the
+// arc lemma are derived in docs/VALIDATION.md ("Robust mode under J2: the no-miss bound").
+#include "evade/conjunction/arc_bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace evade::conjunction {
+namespace {
+
+// J = J2 (Re/r)^2 for the J2 model, 0 for two-body.
+double j2_ratio(double r_m, GravityModel model, const EarthModel& earth) {
+  if (model != GravityModel::kTwoBodyJ2) return 0.0;
+  const double q = earth.re_m / r_m;
+  return earth.j2 * q * q;
+}
+
+// Distance from the origin to the segment p -> q.
+double segment_distance_m(const Vec3& p, const Vec3& q) {
+  const Vec3 d = q - p;
+  const double dd = d.squaredNorm();
+  const double s = dd > 0.0 ? std::clamp(-p.dot(d) / dd, 0.0, 1.0) : 0.0;
+  return (p + s * d).norm();
+}
+
+}  // namespace
+
+double gravity_bound_mps2(double r_m, GravityModel model, const EarthModel& earth) {
+  return earth.mu_m3ps2 / (r_m * r_m) * (1.0 + 3.0 * j2_ratio(r_m, model, earth));
+}
+
+double gravity_gradient_bound_ps2(double r_m, GravityModel model, const EarthModel& earth) {
+  return 2.0 * earth.mu_m3ps2 / (r_m * r_m * r_m) * (1.0 + 42.0 * j2_ratio(r_m, model, earth));
+}
+
+double gravity_hessian_bound(double r_m, GravityModel model, const EarthModel& earth) {
+  const double r2 = r_m * r_m;
+  return 24.0 * earth.mu_m3ps2 / (r2 * r2) * (1.0 + 40.0 * j2_ratio(r_m, model, earth));
+}
+
+ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityModel model,
+                     const EarthModel& earth) {
+  // Lemma, first part: the tangent segment keeps the arc above rho_star.
+  const double d_tan = segment_distance_m(a.r_eci_m, a.r_eci_m + h_s * a.v_eci_mps);
+  const double rho0 = 0.5 * d_tan;
+  const double rho_star = d_tan - gravity_bound_mps2(rho0, model, earth) * h_s * h_s / 2.0;
+  if (!(rho_star > rho0)) {
+    throw std::runtime_error("arc_bounds: grid step " + std::to_string(h_s) +
+                             " s too long for the arc bound (tangent distance " +
+                             std::to_string(d_tan) + " m)");
+  }
+  // Second part: |r''| <= G(rho_star), so the arc stays within G h^2/8 of its chord.
+  const double chord_dev = gravity_bound_mps2(rho_star, model, earth) * h_s * h_s / 8.0;
+  ArcBounds out;
+  out.r_lo_m = std::max(rho_star, segment_distance_m(a.r_eci_m, b.r_eci_m) - chord_dev);
+  out.r_hi_m = std::max(a.r_eci_m.norm(), b.r_eci_m.norm()) + chord_dev;
+  out.g_max_mps2 = gravity_bound_mps2(out.r_lo_m, model, earth);
+  // |v(t)| <= min(|v_a| + g (t - t_a), |v_b| + g (t_b - t)) <= (|v_a| + |v_b| + g h) / 2.
+  out.v_max_mps = 0.5 * (a.v_eci_mps.norm() + b.v_eci_mps.norm() + out.g_max_mps2 * h_s);
+  return out;
+}
+
+}  // namespace evade::conjunction

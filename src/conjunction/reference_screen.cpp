@@ -1,0 +1,159 @@
+// Fine-sampling reference screening with pair skipping (issue 13; see reference_screen.hpp
+// for the method and its speed bound; DOP853 dense output: Hairer, Norsett & Wanner,
+// Solving ODEs I, sec. II.6; Brent's method: events.hpp).
+#include "evade/conjunction/reference_screen.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "evade/dynamics/events.hpp"
+#include "evade/dynamics/kepler_propagator.hpp"
+#include "evade/dynamics/orbit_propagator.hpp"
+
+namespace evade::conjunction {
+namespace {
+
+constexpr double kFloorMarginM = 20e3;
+
+// States of all objects at non-decreasing sample times.
+class SampleEphemeris {
+ public:
+  SampleEphemeris(const std::vector<SpaceObject>& objects, const ScreenOptions& opt)
+      : opt_(opt) {
+    for (const auto& o : objects) {
+      if (opt.gravity == GravityModel::kTwoBody) {
+        kepler_.emplace_back(o.state, opt.earth.mu_m3ps2);
+        continue;
+      }
+      const EarthModel e = opt.earth;
+      auto rhs = [e](double, const Vec6& x) { return orbit_derivative(x, GravityModel::kTwoBodyJ2, e); };
+      numeric_.push_back(std::make_unique<Dop853<Vec6>>(rhs, opt.integ));
+      numeric_.back()->reset(0.0, o.state.stacked());
+    }
+  }
+
+  void states_at(double t, double span_s, std::vector<StateEci>& out) {
+    const std::size_t n = kepler_.size() + numeric_.size();
+    out.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!kepler_.empty()) {
+        out[i] = kepler_[i].state_at(t);
+        continue;
+      }
+      Dop853<Vec6>& in = *numeric_[i];
+      while (in.t_s() < t) {
+        if (!in.step(span_s)) throw std::runtime_error("reference: " + in.failure_reason());
+      }
+      out[i] = t == in.t_s() ? StateEci::from_stacked(in.x()) : StateEci::from_stacked(in.dense(t));
+    }
+  }
+
+  StateEci near(std::size_t i, double t, const StateEci& s, double t_s) const {
+    if (!kepler_.empty()) return kepler_[i].state_at(t);
+    return propagate_orbit(s, t - t_s, opt_.gravity, opt_.earth, opt_.integ);
+  }
+
+ private:
+  ScreenOptions opt_;
+  std::vector<KeplerOrbit> kepler_;
+  std::vector<std::unique_ptr<Dop853<Vec6>>> numeric_;
+};
+
+// V: bound on every pair's relative speed over the span (see the header).
+double relative_speed_bound_mps(const std::vector<SpaceObject>& objects, const ScreenOptions& opt) {
+  const double mu = opt.earth.mu_m3ps2, re = opt.earth.re_m;
+  const double j2 = opt.gravity == GravityModel::kTwoBodyJ2 ? opt.earth.j2 : 0.0;
+  double v2_max = 0.0;
+  for (const auto& o : objects) {
+    const double r = o.state.r_eci_m.norm();
+    const double s = o.state.r_eci_m.z() / r;
+    const double pot = -mu / r + mu * j2 * re * re / (r * r * r) * 0.5 * (3.0 * s * s - 1.0);
+    const double energy = 0.5 * o.state.v_eci_mps.squaredNorm() + pot;
+    v2_max = std::max(v2_max, 2.0 * energy + 2.0 * mu / re + mu * j2 / re);
+  }
+  return 2.0 * 1.01 * std::sqrt(v2_max);
+}
+
+double pair_distance_limit_m(const SpaceObject& a, const SpaceObject& b, const ScreenOptions& opt) {
+  if (!opt.include_warning_radius) return opt.threshold_m;
+  return std::max(opt.threshold_m, warning_radius_m(a, b, opt.warning_multiple));
+}
+
+double range_rate(const StateEci& a, const StateEci& b) {
+  return (b.r_eci_m - a.r_eci_m).dot(b.v_eci_mps - a.v_eci_mps);
+}
+
+struct PairIndex {
+  std::uint32_t i, j;
+};
+
+}  // namespace
+
+ScreenResult screen_reference(const std::vector<SpaceObject>& objects, double span_s,
+                              double sample_step_s, const ScreenOptions& opt) {
+  opt.validate();
+  if (!(sample_step_s > 0.0) || !(span_s > 0.0)) throw std::invalid_argument("reference: bad steps");
+  validate_objects(objects, opt.earth);
+  ScreenResult res;
+  const std::size_t n = objects.size();
+  if (n < 2) return res;
+  SampleEphemeris eph(objects, opt);
+  const double v_rel = relative_speed_bound_mps(objects, opt);
+  const long nsteps = static_cast<long>(std::ceil(span_s / sample_step_s - 1e-12));
+  auto time_of = [&](long k) { return k >= nsteps ? span_s : static_cast<double>(k) * sample_step_s; };
+  // Calendar of pending sign tests: bucket k % ring holds the pairs due at sample k.
+  const std::size_t ring = 4096;
+  std::vector<std::vector<PairIndex>> due(ring);
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = i + 1; j < n; ++j) due[1].push_back({i, j});
+  std::vector<StateEci> prev, cur;
+  eph.states_at(0.0, span_s, prev);
+  std::vector<PairIndex> now;
+  for (long k = 1; k <= nsteps; ++k) {
+    const double t = time_of(k), t_prev = time_of(k - 1);
+    eph.states_at(t, span_s, cur);
+    for (const auto& s : cur)
+      if (s.r_eci_m.norm() < opt.earth.re_m + kFloorMarginM)
+        throw std::runtime_error("reference: an object fell below Re + 20 km");
+    ++res.stats.steps;
+    now.swap(due[static_cast<std::size_t>(k) % ring]);
+    for (const PairIndex& p : now) {
+      ++res.stats.pairs_checked;
+      const double d_ij = pair_distance_limit_m(objects[p.i], objects[p.j], opt);
+      const double fp = range_rate(prev[p.i], prev[p.j]);
+      const double fc = range_rate(cur[p.i], cur[p.j]);
+      if (fp < 0.0 && fc >= 0.0) {
+        ++res.stats.root_solves;
+        const StateEci gi = prev[p.i], gj = prev[p.j];
+        auto f = [&](double tt) { return range_rate(eph.near(p.i, tt, gi, t_prev), eph.near(p.j, tt, gj, t_prev)); };
+        const double tca = brent_root(f, t_prev, t, fp, fc, opt.tca_tol_s, 200);
+        const StateEci si = eph.near(p.i, tca, gi, t_prev), sj = eph.near(p.j, tca, gj, t_prev);
+        const double miss = (sj.r_eci_m - si.r_eci_m).norm();
+        if (miss <= d_ij) {
+          const double rc = collision_radius_m(objects[p.i], objects[p.j]);
+          res.events.push_back(Conjunction{p.i, p.j, tca, miss, (sj.v_eci_mps - si.v_eci_mps).norm(),
+                                           miss <= rc, miss <= opt.warning_multiple * rc});
+        }
+      }
+      // Intervals (t_k, t_k+m] with t_k+m < t_k + (d - D) / V cannot hold a miss <= D.
+      const double d = (cur[p.j].r_eci_m - cur[p.i].r_eci_m).norm();
+      const double free_steps = (d - d_ij) / (v_rel * sample_step_s);
+      long m = free_steps > 0.0 ? static_cast<long>(std::ceil(free_steps)) - 1 : 0;
+      m = std::clamp(m, 0L, static_cast<long>(ring) - 2);
+      if (k + m + 1 <= nsteps) due[static_cast<std::size_t>(k + m + 1) % ring].push_back(p);
+    }
+    now.clear();
+    std::swap(prev, cur);
+  }
+  std::sort(res.events.begin(), res.events.end(), [](const Conjunction& a, const Conjunction& b) {
+    if (a.tca_s != b.tca_s) return a.tca_s < b.tca_s;
+    return a.i != b.i ? a.i < b.i : a.j < b.j;
+  });
+  return res;
+}
+
+}  // namespace evade::conjunction
