@@ -3,11 +3,11 @@
 // publishes evade_nav_state_t and evade_angles_t stamped with their time of validity and
 // keeps the newest evade_thrust_cmd_t (validated; a malformed one is never thrust).
 //
-// Clock (docs/GUIDANCE_NODE.md "Real-time HIL"): the fixed-rate node stamps each cycle with
-// CLOCK_REALTIME µs. The link's clock is CLOCK_REALTIME µs read once at construction and
-// advanced by CLOCK_MONOTONIC, so the simulator's schedule is monotonic (an NTP step during
-// a run cannot make truth jump) while its stamps share the node's time base; the two agree
-// to within the NTP slew over the run (parts per million).
+// Clock (docs/VALIDATION.md, paper 000, "Real-time HIL"): the fixed-rate node stamps each
+// cycle with CLOCK_REALTIME µs. The link's clock is CLOCK_REALTIME µs read once at
+// construction and advanced by CLOCK_MONOTONIC, so the simulator's schedule is monotonic (an
+// NTP step during a run cannot make truth jump) while its stamps share the node's time base;
+// the two agree to within the NTP slew over the run (parts per million).
 #pragma once
 
 #include <memory>

@@ -5,7 +5,8 @@
 // The LCM implementation is evade::lcm_link::make_realtime_lcm_link; nothing here knows LCM.
 //
 // Time base: every utime here is the run's wall clock in µs, the same clock the guidance
-// stamps its cycles with (for the LCM link: CLOCK_REALTIME µs, see docs/GUIDANCE_NODE.md).
+// stamps its cycles with (for the LCM link: CLOCK_REALTIME µs; docs/VALIDATION.md, paper
+// 000, "Real-time HIL").
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Real-time closed-loop simulation (`evade sim --lcm URL --realtime`, docs/GUIDANCE_NODE.md
+// Real-time closed-loop simulation (`evade sim --lcm URL --realtime`, docs/VALIDATION.md
 // "Real-time HIL"): the same truth, sensor and actuator models as run_simulation, but truth
 // advances at wall-clock pace on a RealtimeLink and the guidance runs on its own clock. The
 // sensor publishes each sample stamped with its time of validity, when it is delivered
