@@ -28,7 +28,8 @@ constexpr double kMaxStepsPerObject = 100000.0;
 
 void check_options(const CatalogPropagateOptions& o) {
   if (!(o.span_s >= 0.0 && o.span_s <= kMaxSpanS))
-    throw std::invalid_argument("--span-s = " + std::to_string(o.span_s) + " is invalid: expected a number in [0, 31622400] s");
+    throw std::invalid_argument("--span-s = " + std::to_string(o.span_s) +
+                                " is invalid: expected a number in [0, 31622400] s");
   if (!(o.step_s > 0.0) || o.span_s / o.step_s > kMaxStepsPerObject)
     throw std::invalid_argument("--step-s = " + std::to_string(o.step_s) +
                                 " is invalid: expected a number > 0 with span/step <= 100000");

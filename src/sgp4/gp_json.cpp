@@ -2,6 +2,7 @@
 // (RFC 8259), one object per element set, as catalogue providers publish them.
 #include "evade/sgp4/gp_json.hpp"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -55,8 +56,10 @@ Catalog read_gp_json(const std::string& text, const std::string& source) {
   try {
     doc = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    const Pos p = position_of(text, e.byte > 0 ? e.byte - 1 : 0);
-    cat.issues.push_back({source, p.line, p.column, "well-formed JSON (" + std::string(e.what()) + ")", text.substr(e.byte > 0 ? e.byte - 1 : 0, 12)});
+    const std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
+    const Pos p = position_of(text, at);
+    cat.issues.push_back({source, p.line, p.column, "well-formed JSON (" + std::string(e.what()) + ")",
+                          text.substr(std::min(at, text.size()), 12)});
     ++cat.bad_entries;
     return cat;
   }

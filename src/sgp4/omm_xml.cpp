@@ -200,7 +200,8 @@ Catalog read_omm_xml(const std::string& text, const std::string& source) {
   std::vector<const XmlNode*> segs;
   segments(*root, segs);
   if (segs.empty() || (root->name != "ndm" && root->name != "omm")) {
-    cat.issues.push_back({source, root->line, root->column, "an <omm> (or <ndm>) document with at least one <segment>", root->name});
+    cat.issues.push_back(
+        {source, root->line, root->column, "an <omm> (or <ndm>) document with at least one <segment>", root->name});
     ++cat.bad_entries;
   }
   for (const XmlNode* seg : segs) {

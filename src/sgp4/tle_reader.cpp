@@ -66,7 +66,8 @@ class TleLine {
   long catalog_number(int first) const {
     const std::string f = cols(first, first + 4);
     long n = 0;
-    if (!parse_alpha5(f, n)) fail(first, "a catalog number (5 digits, or Alpha-5: a letter A-Z but I, O, then 4 digits)", f);
+    if (!parse_alpha5(f, n))
+      fail(first, "a catalog number (5 digits, or Alpha-5: a letter A-Z but I, O, then 4 digits)", f);
     return n;
   }
   const std::string& text() const { return s_; }
@@ -82,7 +83,8 @@ void check_frame(const TleLine& l, char first_char, const TleReadOptions& opt) {
   const std::string& s = l.text();
   if (s.empty() || s[0] != first_char) l.fail(1, std::string("line number '") + first_char + "' in column 1", l.cols(1, 1));
   l.expect_blank(2);
-  if (s.size() < 69) l.fail(static_cast<int>(s.size()) + 1, "a 69-column line", "end of line after column " + std::to_string(s.size()));
+  if (s.size() < 69)
+    l.fail(static_cast<int>(s.size()) + 1, "a 69-column line", "end of line after column " + std::to_string(s.size()));
   if (!opt.allow_trailing_text && trim(s.substr(69)).size() > 0) l.fail(70, "nothing after column 69", s.substr(69));
   if (!opt.check_checksum) return;
   const char c = s[68];
@@ -104,8 +106,10 @@ void read_line1(const TleLine& l, MeanElements& m) {
   const int yy = l.digits_or_blank(19, 20, "a two-digit epoch year");
   if (trim(l.cols(19, 20)).size() != 2) l.fail(19, "a two-digit epoch year", l.cols(19, 20));
   m.epoch_year = yy < 57 ? 2000 + yy : 1900 + yy;
-  m.epoch_day_of_year = l.number(21, 32, "an epoch day of year in [1, " + std::to_string(days_in_year(m.epoch_year) + 1) + ")", 1.0, days_in_year(m.epoch_year) + 1.0);
-  if (m.epoch_day_of_year >= days_in_year(m.epoch_year) + 1.0) l.fail(21, "an epoch day of year below " + std::to_string(days_in_year(m.epoch_year) + 1), l.cols(21, 32));
+  const int end_day = days_in_year(m.epoch_year) + 1;
+  const std::string day_range = "an epoch day of year in [1, " + std::to_string(end_day) + ")";
+  m.epoch_day_of_year = l.number(21, 32, day_range, 1.0, end_day);
+  if (m.epoch_day_of_year >= end_day) l.fail(21, day_range, l.cols(21, 32));
   l.expect_blank(33);
   m.mean_motion_dot_revpday2 = l.number(34, 43, "a mean motion derivative / 2 in (-1, 1) rev/day^2", -1.0, 1.0);
   l.expect_blank(44);
@@ -119,7 +123,8 @@ void read_line1(const TleLine& l, MeanElements& m) {
 }
 
 void read_line2(const TleLine& l, MeanElements& m) {
-  if (l.catalog_number(3) != m.norad_id) l.fail(3, "the catalog number of line 1 (" + std::to_string(m.norad_id) + ")", l.cols(3, 7));
+  if (l.catalog_number(3) != m.norad_id)
+    l.fail(3, "the catalog number of line 1 (" + std::to_string(m.norad_id) + ")", l.cols(3, 7));
   l.expect_blank(8);
   m.inclination_deg = l.number(9, 16, "an inclination in [0, 180] deg", 0.0, 180.0);
   l.expect_blank(17);
@@ -127,7 +132,9 @@ void read_line2(const TleLine& l, MeanElements& m) {
   l.expect_blank(26);
   std::string e = l.cols(27, 33);
   for (char& c : e) if (c == ' ') c = '0';
-  for (char c : e) if (!std::isdigit(static_cast<unsigned char>(c))) l.fail(27, "an eccentricity as 7 digits with an implied leading decimal point", l.cols(27, 33));
+  for (char c : e)
+    if (!std::isdigit(static_cast<unsigned char>(c)))
+      l.fail(27, "an eccentricity as 7 digits with an implied leading decimal point", l.cols(27, 33));
   m.eccentricity = std::atof(("0." + e).c_str());
   l.expect_blank(34);
   m.arg_perigee_deg = l.number(35, 42, "an argument of perigee in [0, 360] deg", 0.0, 360.0);
