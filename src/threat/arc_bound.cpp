@@ -118,8 +118,17 @@ double ArcBound::lower_bound_s(const Vec3& e_rsw, double dv_mps, double chord,
   const long k = static_cast<long>(t_.size());
   const Vec3 dv = dv_mps * e_rsw;
   std::vector<char> sure(k, 0);
+  const HcwTransfer& tr = solver_.transfer();
   for (long i = 0; i < k; ++i) {
-    sure[i] = cost_upper(w_[i] + b_[i] * dv, maps_[i], ball, false, t_[i]) <= vmax ? 1 : 0;
+    // Shortcuts: the bound is ≥ the 2-impulse cost and ≤ it plus the Lipschitz term.
+    const Vec6 d = w_[i] + b_[i] * dv;
+    const double j2 = tr.two_impulse_cost(d);
+    if (j2 > vmax) continue;
+    if (j2 + (maps_[i].n1 + maps_[i].n2) * dv_mps * chord * (1.0 + 1e-12) <= vmax) {
+      sure[i] = 1;
+      continue;
+    }
+    sure[i] = cost_upper(d, maps_[i], ball, false, t_[i]) <= vmax ? 1 : 0;
   }
   if (refine_edges && solver_.options().impulses > 2) {
     // Grid points next to a certain one may be certain with the SQP's plan: grow the runs
