@@ -89,9 +89,10 @@ nlohmann::json summary_json(const config::Scenario& sc, const ThreatScenario& in
 }
 
 // How the direction search's result was certified.
-nlohmann::json search_json(const EvasionResult& r) {
+nlohmann::json search_json(const EvasionResult& r, bool use_isres) {
   const SearchCertificate& c = r.certificate;
-  return {{"method", c.grid_evaluations > 0 ? "sweep+bobyqa" : "isres"},
+  const char* method = r.dv_mps == 0.0 ? "none (V_E = 0)" : use_isres ? "isres" : "sweep+bobyqa";
+  return {{"method", method},
           {"grid_evaluations", c.grid_evaluations},
           {"local_evaluations", c.local_evaluations},
           {"local_starts", c.local_starts},
@@ -106,7 +107,7 @@ nlohmann::json search_json(const EvasionResult& r) {
 }
 
 // The optimal direction at V_E.
-void add_evasion_json(const ThreatStudy& s, nlohmann::json& j) {
+void add_evasion_json(const ThreatStudy& s, bool use_isres, nlohmann::json& j) {
   const EvasionResult& r = s.evasion;
   j["runtime_s"] = s.runtime_s;
   j["dv_mps"] = r.dv_mps;
@@ -120,7 +121,7 @@ void add_evasion_json(const ThreatStudy& s, nlohmann::json& j) {
   j["dv_rsw_mps"] = vec_json(r.dv_rsw_mps);
   j["evaluations"] = r.evaluations;
   j["decisions"] = counts_json(r.counts);
-  j["search"] = search_json(r);
+  j["search"] = search_json(r, use_isres);
 }
 
 void add_elimination_json(const ThreatStudy& s, nlohmann::json& j) {
@@ -169,7 +170,7 @@ nlohmann::json transfer_row_json(const TransferStudyRow& r) {
 nlohmann::json study_json(const config::Scenario& sc, const ThreatScenario& in,
                           const ThreatStudy& s) {
   nlohmann::json j = summary_json(sc, in, s);
-  add_evasion_json(s, j);
+  add_evasion_json(s, in.evasion.use_isres, j);
   if (s.elimination) add_elimination_json(s, j);
   if (!s.sweep_dv.empty()) {
     j["sweep_dv"] = nlohmann::json::array();
