@@ -24,11 +24,6 @@ std::int64_t monotonic_us() noexcept {
 
 }  // namespace
 
-std::string NodeConfig::validate() const {
-  const std::string err = validate_params(node_params(), *this, "node.");
-  return err.empty() ? guidance.validate() : err;
-}
-
 static const NodeConfig& checked(const NodeConfig& cfg) {
   const std::string err = cfg.validate();
   if (!err.empty()) throw std::invalid_argument(err);

@@ -9,8 +9,6 @@
 // constant-thrust segments with the closest-approach event and the Δv / burn-time tally.
 #include "evade/sim/simulator.hpp"
 
-#include "evade/sim/sim_params.hpp"
-
 #include <cmath>
 #include <deque>
 #include <stdexcept>
@@ -41,8 +39,6 @@ double closing_g(const Vec12& x) {
   return (x.segment<3>(6) - x.segment<3>(0)).dot(x.segment<3>(9) - x.segment<3>(3));
 }
 
-bool finite_state(const StateEci& s) { return s.r_eci_m.allFinite() && s.v_eci_mps.allFinite(); }
-
 struct Pending {
   std::int64_t at_us = 0;  // when it takes effect / is delivered
   guidance::AnglesMeasurement meas;
@@ -50,19 +46,6 @@ struct Pending {
 };
 
 }  // namespace
-
-void SimConfig::validate() const {
-  if (!finite_state(satellite0) || !(satellite0.r_eci_m.norm() > 0.0)) {
-    throw std::invalid_argument("sim.satellite: state not finite or zero position");
-  }
-  if (!finite_state(debris0) || !(debris0.r_eci_m.norm() > 0.0)) {
-    throw std::invalid_argument("sim.debris: state not finite or zero position");
-  }
-  std::string err = validate_params(sim_params(), *this, "");
-  if (err.empty()) err = guidance.validate();
-  if (!err.empty()) throw std::invalid_argument(err);
-  integrator.validate();
-}
 
 Encounter find_nominal_encounter(const SimConfig& cfg) {
   const GravityModel model = cfg.gravity;
