@@ -197,12 +197,12 @@ void print_text(const Options& o, const ScreenScenario& in, const std::vector<Sp
 }
 
 int run(const Options& o) {
-  const distributed::MpiSession mpi;  // one process unless started by mpirun
   const config::Scenario sc = load_scenario(o.common);
   const ScreenScenario in = read_screen_scenario(sc);
   const Objects ob = load_objects(o, sc, in);
   if (o.method == "paper") sc.mark_used("robust");
   sc.check_all_used();
+  const distributed::MpiSession mpi;  // one process unless started by mpirun
 
   nlohmann::json out;
   out["command"] = "screen";

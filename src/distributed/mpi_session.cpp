@@ -3,6 +3,7 @@
 #include "evade/distributed/mpi_session.hpp"
 
 #include <cstdlib>
+#include <exception>
 
 #ifdef EVADE_HAVE_MPI
 #include <mpi.h>
@@ -47,7 +48,11 @@ MpiSession::MpiSession() {
 
 MpiSession::~MpiSession() {
 #ifdef EVADE_HAVE_MPI
-  if (active_) MPI_Finalize();
+  if (!active_) return;
+  // Left by an exception (one rank failed): the other ranks may wait in a collective call
+  // forever, so end the whole job (MPI_Abort) rather than finalize this rank alone.
+  if (std::uncaught_exceptions() > 0) MPI_Abort(MPI_COMM_WORLD, 1);
+  MPI_Finalize();
 #endif
 }
 

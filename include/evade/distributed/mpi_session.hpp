@@ -3,6 +3,8 @@
 // when the process was started by an MPI launcher (mpirun sets OMPI_COMM_WORLD_SIZE, PMIx
 // launchers PMIX_RANK, others PMI_RANK); otherwise, and when evade was built without MPI
 // (EVADE_WITH_MPI=OFF), the session is one process of rank 0 and nothing is initialized.
+// A session destroyed by an exception's unwinding aborts the whole job (MPI_Abort), so that
+// one failing rank does not leave the others waiting in a collective call.
 #pragma once
 
 namespace evade::distributed {
