@@ -18,24 +18,13 @@
 #include "evade/dynamics/events.hpp"
 #include "evade/sim/actuator_model.hpp"
 #include "evade/sim/sensor_model.hpp"
+#include "evade/sim/internal/thrusted_truth.hpp"
 #include "evade/sim/truth_sample.hpp"
 
 namespace evade::sim {
 namespace {
 
-using Vec12 = Eigen::Matrix<double, 12, 1>;
 constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
-
-Vec12 pack(const StateEci& sat, const StateEci& deb) {
-  Vec12 x;
-  x << sat.r_eci_m, sat.v_eci_mps, deb.r_eci_m, deb.v_eci_mps;
-  return x;
-}
-StateEci sat_of(const Vec12& x) { return {x.segment<3>(0), x.segment<3>(3)}; }
-StateEci deb_of(const Vec12& x) { return {x.segment<3>(6), x.segment<3>(9)}; }
-double closing_g(const Vec12& x) {
-  return (x.segment<3>(6) - x.segment<3>(0)).dot(x.segment<3>(9) - x.segment<3>(3));
-}
 
 double quantile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
@@ -62,10 +51,7 @@ class RealtimeLoop {
         link_(link),
         on_sample_(on_sample),
         res_(*res),
-        integ_(typename Dop853<Vec12>::Rhs(
-                   [this](double, const Vec12& x) { return derivative(x); }),
-               cfg.integrator),
-        x_(pack(cfg.satellite0, cfg.debris0)),
+        truth_(cfg, &res->sim),
         sensor_(cfg.sensor),
         actuator_(cfg.actuator),
         sample_us_(std::llround(1e6 / cfg.sensor.rate_hz)),
@@ -73,8 +59,6 @@ class RealtimeLoop {
         act_lat_us_(std::llround(cfg.actuator.latency_s * 1e6)),
         late_tol_us_(std::llround(cfg.realtime.late_tolerance_s * 1e6)) {
     if (sample_us_ < 1) throw std::invalid_argument("sim: sensor rate too high");
-    eo_.direction = EventDirection::kRising;
-    eo_.time_tol_s = 1e-10;
   }
   RealtimeLoop(const RealtimeLoop&) = delete;
   RealtimeLoop& operator=(const RealtimeLoop&) = delete;
@@ -82,8 +66,6 @@ class RealtimeLoop {
   void run();
 
  private:
-  Vec12 derivative(const Vec12& x) const;
-  void advance_unforced_to_start();
   double t_of(std::int64_t utime) const {
     return res_.sim.start_s + 1e-6 * static_cast<double>(utime - utime0_);
   }
@@ -91,8 +73,6 @@ class RealtimeLoop {
   void receive_command();
   void advance_truth_to(std::int64_t utime);
   void integrate_segment(std::int64_t seg_start_us, std::int64_t seg_end_us);
-  void check_closest_approach(double g_prev, double g_now, double t0);
-  void add_thrust_time(double dt_s);
   void apply_due_accel(std::int64_t utime);
   void sample_and_deliver(std::int64_t utime);
   void report(std::int64_t utime, const guidance::AnglesMeasurement* meas);
@@ -103,8 +83,7 @@ class RealtimeLoop {
   RealtimeLink& link_;
   const SampleCallback& on_sample_;
   RealtimeResult& res_;
-  Dop853<Vec12> integ_;
-  Vec12 x_;                      // truth at truth_us_
+  ThrustedTruth truth_;          // truth at truth_us_, thrust in force (ZOH)
   std::int64_t truth_us_ = 0;
   std::int64_t utime0_ = 0;      // wall clock of the run's first instant
   std::int64_t stop_us_ = kNever;  // after the closest approach (+ post_tca_s)
@@ -115,31 +94,9 @@ class RealtimeLoop {
   std::int64_t next_sample_us_ = 0;
   std::deque<PendingMeas> meas_queue_;
   std::deque<PendingAccel> accel_queue_;
-  Vec3 a_thrust_ = Vec3::Zero();
   guidance::ThrustCommand cmd_in_force_;
   std::vector<double> ages_ms_;
-  EventOptions eo_;
-  bool ca_found_ = false;
 };
-
-Vec12 RealtimeLoop::derivative(const Vec12& x) const {
-  Vec12 d;
-  d.head<6>() = orbit_derivative(x.head<6>(), cfg_.gravity, cfg_.earth);
-  d.segment<3>(3) += a_thrust_;
-  d.tail<6>() = orbit_derivative(x.tail<6>(), cfg_.gravity, cfg_.earth);
-  return d;
-}
-
-// Unforced from the epoch to the detection time (before the wall clock starts).
-void RealtimeLoop::advance_unforced_to_start() {
-  const double t_start = res_.sim.start_s;
-  if (t_start == 0.0) return;
-  integ_.reset(0.0, x_);
-  while (integ_.t_s() != t_start) {
-    if (!integ_.step(t_start)) throw std::runtime_error("sim: " + integ_.failure_reason());
-  }
-  x_ = integ_.x();
-}
 
 std::int64_t RealtimeLoop::next_event_us() const {
   std::int64_t ev = std::min({next_sample_us_, stop_us_, end_us_});
@@ -163,7 +120,7 @@ void RealtimeLoop::receive_command() {
 void RealtimeLoop::apply_due_accel(std::int64_t utime) {
   while (!accel_queue_.empty() && accel_queue_.front().at_us <= utime) {
     const PendingAccel& p = accel_queue_.front();
-    a_thrust_ = p.accel;
+    truth_.set_thrust(p.accel);
     cmd_in_force_ = p.cmd;
     ages_ms_.push_back(1e-3 * static_cast<double>(p.at_us - p.cmd.utime_us));
     ++res_.commands_applied;
@@ -179,39 +136,9 @@ void RealtimeLoop::advance_truth_to(std::int64_t utime) {
 }
 
 void RealtimeLoop::integrate_segment(std::int64_t seg_start_us, std::int64_t seg_end_us) {
-  const double t0 = t_of(seg_start_us);
-  const double t1 = t_of(seg_end_us);
-  integ_.reset(t0, x_);
-  double g_prev = closing_g(x_);
-  while (integ_.t_s() != t1) {
-    if (!integ_.step(t1)) throw std::runtime_error("sim: " + integ_.failure_reason());
-    const double g_now = closing_g(integ_.x());
-    if (!ca_found_) check_closest_approach(g_prev, g_now, t0);
-    g_prev = g_now;
-  }
-  if (!ca_found_) add_thrust_time(t1 - t0);
-  x_ = integ_.x();
-}
-
-void RealtimeLoop::check_closest_approach(double g_prev, double g_now, double t0) {
-  auto g = [](double, const Vec12& xs) { return closing_g(xs); };
-  auto ev = locate_event_in_step(integ_, g, g_prev, g_now, eo_);
-  if (!ev) return;
-  ca_found_ = true;
-  res_.sim.closest_approach_found = true;
-  res_.sim.tca_s = ev->t_s;
-  res_.sim.miss_m = (ev->x.segment<3>(6) - ev->x.segment<3>(0)).norm();
-  const double after_s = ev->t_s - res_.sim.start_s + cfg_.encounter.post_tca_s;
+  if (!truth_.integrate(t_of(seg_start_us), t_of(seg_end_us), nullptr)) return;
+  const double after_s = res_.sim.tca_s - res_.sim.start_s + cfg_.encounter.post_tca_s;
   stop_us_ = std::max(truth_us_, utime0_ + static_cast<std::int64_t>(std::ceil(after_s * 1e6)));
-  add_thrust_time(ev->t_s - t0);
-}
-
-void RealtimeLoop::add_thrust_time(double dt_s) {
-  const double an = a_thrust_.norm();
-  if (an > 0.0) {
-    res_.sim.dv_mps += an * dt_s;
-    res_.sim.burn_s += dt_s;
-  }
 }
 
 // At a sample instant: the navigation state is published and the sensor samples (delivered
@@ -224,11 +151,11 @@ void RealtimeLoop::sample_and_deliver(std::int64_t utime) {
   if (sample_now) {
     guidance::NavState nav;
     nav.utime_us = utime;
-    nav.r_eci_m = x_.segment<3>(0);
-    nav.v_eci_mps = x_.segment<3>(3);
+    nav.r_eci_m = truth_.x().segment<3>(0);
+    nav.v_eci_mps = truth_.x().segment<3>(3);
     nav.valid = true;
     link_.send_nav(nav);
-    if (sensor_.measure(utime, sat_of(x_), deb_of(x_), &m)) {
+    if (sensor_.measure(utime, sat_of(truth_.x()), deb_of(truth_.x()), &m)) {
       meas_queue_.push_back({utime + sensor_lat_us_, m});
       sampled = &m;
     } else {
@@ -246,11 +173,11 @@ void RealtimeLoop::sample_and_deliver(std::int64_t utime) {
 
 void RealtimeLoop::report(std::int64_t utime, const guidance::AnglesMeasurement* meas) {
   if (!on_sample_) return;
-  SimSample s = truth_sample(t_of(utime), sat_of(x_), deb_of(x_));
+  SimSample s = truth_sample(t_of(utime), sat_of(truth_.x()), deb_of(truth_.x()));
   s.has_measurement = (meas != nullptr);
   if (meas != nullptr) s.meas = *meas;
   s.cmd = cmd_in_force_;
-  s.accel_applied_eci_mps2 = a_thrust_;
+  s.accel_applied_eci_mps2 = truth_.thrust();
   s.has_status = link_.status(&s.status);
   on_sample_(s);
 }
@@ -273,7 +200,7 @@ void RealtimeLoop::finish() {
 }
 
 void RealtimeLoop::run() {
-  advance_unforced_to_start();
+  truth_.advance_unforced_to(res_.sim.start_s);  // before the wall clock starts
   // The wall clock starts now (rounded up to the next ms, so that stamps read well).
   utime0_ = (link_.now_us() / 1000 + 1) * 1000;
   res_.start_utime_us = utime0_;

@@ -18,26 +18,12 @@
 #include "evade/guidance/los_geometry.hpp"
 #include "evade/sim/actuator_model.hpp"
 #include "evade/sim/sensor_model.hpp"
+#include "evade/sim/internal/thrusted_truth.hpp"
 #include "evade/sim/truth_sample.hpp"
 
 namespace evade::sim {
 
 namespace {
-
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-
-Vec12 pack(const StateEci& sat, const StateEci& deb) {
-  Vec12 x;
-  x << sat.r_eci_m, sat.v_eci_mps, deb.r_eci_m, deb.v_eci_mps;
-  return x;
-}
-StateEci sat_of(const Vec12& x) { return {x.segment<3>(0), x.segment<3>(3)}; }
-StateEci deb_of(const Vec12& x) { return {x.segment<3>(6), x.segment<3>(9)}; }
-
-// g = rel_r · rel_v: negative while closing, rising through 0 at a closest approach.
-double closing_g(const Vec12& x) {
-  return (x.segment<3>(6) - x.segment<3>(0)).dot(x.segment<3>(9) - x.segment<3>(3));
-}
 
 struct Pending {
   std::int64_t at_us = 0;  // when it takes effect / is delivered
@@ -123,7 +109,7 @@ SimResult nominal_start(const SimConfig& cfg) {
 // One closed-loop run from the start instant: per guidance cycle, deliver the newest
 // measurement, exchange with the guidance, queue the actuator's acceleration, report the
 // sample, then integrate to the next cycle in ZOH segments while looking for the closest
-// approach. Holds the truth, the integrator (its right-hand side reads a_thrust_) and the
+// approach. Holds the truth with its held thrust (ThrustedTruth) and the
 // sensor/actuator queues; not copyable.
 class ClosedLoop {
  public:
@@ -134,23 +120,15 @@ class ClosedLoop {
         on_sample_(on_sample),
         res_(*res),
         sched_(make_schedule(cfg, res->start_s)),
-        integ_(typename Dop853<Vec12>::Rhs(
-                   [this](double, const Vec12& x) { return derivative(x); }),
-               cfg.integrator),
-        x_(pack(cfg.satellite0, cfg.debris0)),
+        truth_(cfg, res),
         sensor_(cfg.sensor),
-        actuator_(cfg.actuator) {
-    eo_.direction = EventDirection::kRising;
-    eo_.time_tol_s = 1e-10;
-  }
+        actuator_(cfg.actuator) {}
   ClosedLoop(const ClosedLoop&) = delete;
   ClosedLoop& operator=(const ClosedLoop&) = delete;
 
   void run();
 
  private:
-  Vec12 derivative(const Vec12& x) const;
-  void advance_unforced_to_start();
   void take_sample(std::int64_t utime, const Vec12& xs);
   void take_samples_in_step(std::int64_t utime_end, bool use_dense);
   const guidance::AnglesMeasurement* deliver_measurement(std::int64_t utime);
@@ -160,10 +138,8 @@ class ClosedLoop {
               const guidance::ThrustCommand& cmd);
   void integrate_cycle(std::int64_t utime, std::int64_t utime_next);
   void integrate_segment(std::int64_t seg_start_us, std::int64_t seg_end_us);
-  void check_closest_approach(double g_prev, double g_now, double t0);
-  void add_thrust_time(double dt_s);
   bool stopped_at(std::int64_t utime) const {
-    return ca_found_ && sched_.t_of(utime) >= t_stop_;
+    return truth_.closest_approach_found() && sched_.t_of(utime) >= t_stop_;
   }
 
   const SimConfig& cfg_;
@@ -171,38 +147,15 @@ class ClosedLoop {
   const SampleCallback& on_sample_;
   SimResult& res_;
   const Schedule sched_;
-  Vec3 a_thrust_ = Vec3::Zero();  // applied acceleration of the satellite (ZOH)
-  Dop853<Vec12> integ_;
-  Vec12 x_;  // truth at the start of the current cycle / segment
+  ThrustedTruth truth_;  // truth at the start of the current cycle / segment, thrust (ZOH)
   AngleSensor sensor_;
   Actuator actuator_;
   std::deque<Pending> meas_queue_;   // waiting for delivery (sensor latency)
   std::deque<Pending> accel_queue_;  // waiting to take effect (actuator latency)
   std::int64_t next_sample_us_ = kUtime0;
   guidance::AnglesMeasurement delivered_;
-  EventOptions eo_;
-  bool ca_found_ = false;
   double t_stop_ = 0.0;
 };
-
-Vec12 ClosedLoop::derivative(const Vec12& x) const {
-  Vec12 d;
-  d.head<6>() = orbit_derivative(x.head<6>(), cfg_.gravity, cfg_.earth);
-  d.segment<3>(3) += a_thrust_;
-  d.tail<6>() = orbit_derivative(x.tail<6>(), cfg_.gravity, cfg_.earth);
-  return d;
-}
-
-// Unforced from the epoch to the detection time.
-void ClosedLoop::advance_unforced_to_start() {
-  const double t_start = sched_.t_start_s;
-  if (t_start == 0.0) return;
-  integ_.reset(0.0, x_);
-  while (integ_.t_s() != t_start) {
-    if (!integ_.step(t_start)) throw std::runtime_error("sim: " + integ_.failure_reason());
-  }
-  x_ = integ_.x();
-}
 
 void ClosedLoop::take_sample(std::int64_t utime, const Vec12& xs) {
   guidance::AnglesMeasurement m;
@@ -217,8 +170,9 @@ void ClosedLoop::take_sample(std::int64_t utime, const Vec12& xs) {
 void ClosedLoop::take_samples_in_step(std::int64_t utime_end, bool use_dense) {
   while (next_sample_us_ <= utime_end) {
     const double ts = sched_.t_of(next_sample_us_);
-    if (ts > integ_.t_s()) break;
-    const Vec12 xs = (use_dense && ts != integ_.t_s()) ? integ_.dense(ts) : integ_.x();
+    const Dop853<Vec12>& integ = truth_.integrator();
+    if (ts > integ.t_s()) break;
+    const Vec12 xs = (use_dense && ts != integ.t_s()) ? integ.dense(ts) : integ.x();
     take_sample(next_sample_us_, xs);
     next_sample_us_ += sched_.sensor_us;
   }
@@ -242,8 +196,8 @@ guidance::ThrustCommand ClosedLoop::exchange(std::int64_t utime,
                                              const guidance::AnglesMeasurement* meas) {
   guidance::NavState nav;
   nav.utime_us = utime;
-  nav.r_eci_m = x_.segment<3>(0);
-  nav.v_eci_mps = x_.segment<3>(3);
+  nav.r_eci_m = truth_.x().segment<3>(0);
+  nav.v_eci_mps = truth_.x().segment<3>(3);
   nav.valid = true;
   const guidance::ThrustCommand cmd = guidance_.exchange(utime, nav, meas);
   ++res_.cycles;
@@ -254,7 +208,7 @@ guidance::ThrustCommand ClosedLoop::exchange(std::int64_t utime,
 
 void ClosedLoop::apply_due_accel(std::int64_t utime) {
   while (!accel_queue_.empty() && accel_queue_.front().at_us <= utime) {
-    a_thrust_ = accel_queue_.front().accel;
+    truth_.set_thrust(accel_queue_.front().accel);
     accel_queue_.pop_front();
   }
 }
@@ -262,11 +216,11 @@ void ClosedLoop::apply_due_accel(std::int64_t utime) {
 void ClosedLoop::report(double t_k, const guidance::AnglesMeasurement* meas,
                         const guidance::ThrustCommand& cmd) {
   if (!on_sample_) return;
-  SimSample s = truth_sample(t_k, sat_of(x_), deb_of(x_));
+  SimSample s = truth_sample(t_k, sat_of(truth_.x()), deb_of(truth_.x()));
   s.has_measurement = (meas != nullptr);
   if (meas != nullptr) s.meas = *meas;
   s.cmd = cmd;
-  s.accel_applied_eci_mps2 = a_thrust_;
+  s.accel_applied_eci_mps2 = truth_.thrust();
   s.has_status = guidance_.status(&s.status);
   on_sample_(s);
 }
@@ -288,46 +242,15 @@ void ClosedLoop::integrate_cycle(std::int64_t utime, std::int64_t utime_next) {
 // One segment at constant thrust: sensor samples on the dense output, the closest approach
 // as the rising zero of g, and Δv / burn time up to the closest approach.
 void ClosedLoop::integrate_segment(std::int64_t seg_start_us, std::int64_t seg_end_us) {
-  const double t0 = sched_.t_of(seg_start_us);
-  const double t1 = sched_.t_of(seg_end_us);
-  integ_.reset(t0, x_);
-  double g_prev = closing_g(x_);
-  while (integ_.t_s() != t1) {
-    if (!integ_.step(t1)) throw std::runtime_error("sim: " + integ_.failure_reason());
-    take_samples_in_step(seg_end_us, true);
-    const double g_now = closing_g(integ_.x());
-    if (!ca_found_) check_closest_approach(g_prev, g_now, t0);
-    g_prev = g_now;
-  }
-  if (!ca_found_) add_thrust_time(t1 - t0);
-  x_ = integ_.x();
-}
-
-void ClosedLoop::check_closest_approach(double g_prev, double g_now, double t0) {
-  auto g = [](double, const Vec12& xs) { return closing_g(xs); };
-  auto ev = locate_event_in_step(integ_, g, g_prev, g_now, eo_);
-  if (!ev) return;
-  ca_found_ = true;
-  res_.closest_approach_found = true;
-  res_.tca_s = ev->t_s;
-  res_.miss_m = (ev->x.segment<3>(6) - ev->x.segment<3>(0)).norm();
-  t_stop_ = ev->t_s + cfg_.encounter.post_tca_s;
-  // Δv and burn time of this segment up to the closest approach.
-  add_thrust_time(ev->t_s - t0);
-}
-
-void ClosedLoop::add_thrust_time(double dt_s) {
-  const double an = a_thrust_.norm();
-  if (an > 0.0) {
-    res_.dv_mps += an * dt_s;
-    res_.burn_s += dt_s;
-  }
+  const bool found = truth_.integrate(sched_.t_of(seg_start_us), sched_.t_of(seg_end_us),
+                                      [&] { take_samples_in_step(seg_end_us, true); });
+  if (found) t_stop_ = res_.tca_s + cfg_.encounter.post_tca_s;
 }
 
 void ClosedLoop::run() {
-  advance_unforced_to_start();
+  truth_.advance_unforced_to(sched_.t_start_s);
   if (next_sample_us_ == kUtime0) {  // the sample at the start instant
-    take_sample(kUtime0, x_);
+    take_sample(kUtime0, truth_.x());
     next_sample_us_ += sched_.sensor_us;
   }
   for (std::int64_t k = 0;; ++k) {
