@@ -18,6 +18,7 @@
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/convert.hpp"
 #include "evade/guidance_lcm/internal/raw_publisher.hpp"
+#include "evade/lcm_link/internal/command_filter.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
 namespace evade::lcm_link {
@@ -103,21 +104,12 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
   static void on_cmd(const lcm_recv_buf_t* rbuf, const char*, void* user) {
     auto* self = static_cast<RealtimeLcmLink*>(user);
     const std::int64_t t = self->now_us();
-    evade_thrust_cmd_t m{};
-    if (m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) !=
-        static_cast<int>(rbuf->data_size)) {
+    bool have = self->received_ > 0;
+    if (receive_command(rbuf, &have, &self->last_seq_, &self->newest_.cmd) !=
+        CommandVerdict::kAccepted) {
       return;
     }
-    const Reason r = validate(m);
-    if (r != Reason::kOk) {  // never thrust from a malformed command
-      std::fprintf(stderr, "evade sim: rejected a malformed command from the node (%s)\n",
-                   reason_name(r));
-      return;
-    }
-    if (self->received_ > 0 && m.seq <= self->last_seq_) return;  // duplicate / old
-    self->last_seq_ = m.seq;
     ++self->received_;
-    from_lcm(m, &self->newest_.cmd);
     self->newest_.received_utime_us = t;
     self->have_new_ = true;
   }

@@ -22,6 +22,7 @@
 
 #include <lcm/lcm.h>
 
+#include "evade/lcm_link/internal/command_filter.hpp"
 #include "evade/lcm_link/sim_lcm_endpoint.hpp"
 
 #include "evade/guidance_lcm/channels.hpp"
@@ -163,24 +164,10 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
   }
   static void on_cmd(const lcm_recv_buf_t* rbuf, const char*, void* user) {
     auto* self = static_cast<LcmEndpoint*>(user);
-    evade_thrust_cmd_t m{};
-    if (m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) !=
-        static_cast<int>(rbuf->data_size)) {
-      ++self->bad_cmds_;
-      return;
+    if (receive_command(rbuf, &self->have_cmd_, &self->last_cmd_seq_, &self->latest_) ==
+        CommandVerdict::kMalformed) {
+      ++self->bad_cmds_;  // the previous command stays in force
     }
-    const Reason r = validate(m);
-    if (r != Reason::kOk) {
-      // Never thrust from a malformed command: report it loudly, keep the previous one.
-      std::fprintf(stderr, "evade sim: rejected a malformed command from the node (%s)\n",
-                   reason_name(r));
-      ++self->bad_cmds_;
-      return;
-    }
-    if (self->have_cmd_ && m.seq <= self->last_cmd_seq_) return;  // duplicate / old
-    self->last_cmd_seq_ = m.seq;
-    from_lcm(m, &self->latest_);
-    self->have_cmd_ = true;
   }
   static void on_status(const lcm_recv_buf_t* rbuf, const char*, void* user) {
     auto* self = static_cast<LcmEndpoint*>(user);
