@@ -11,22 +11,7 @@
 #include "evade/guidance/guidance_law.hpp"
 #include "evade/guidance/los_geometry.hpp"
 
-namespace {
-std::atomic<long> g_news{0};
-}  // namespace
-
-// GCC (with inlining, e.g. -O2 + sanitizers) flags free() in a replaced operator delete as
-// mismatched with `new` expressions; here new and delete are both replaced and both use
-// malloc/free, so the pairing is correct.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-void* operator new(std::size_t n) {
-  ++g_news;
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/counting_new.hpp"
 
 namespace {
 
