@@ -3,7 +3,9 @@
 // K_am (paper eqs. 2, 4), Table 1 (limits per constraint and overall), the decision
 // (direction, Δa, burn times, vis-viva Δv) and its verification by two-body + J2
 // propagation (miss at the TCA, each constraint's minimum margin over T days).
-// --numerical-limits adds Table 1 recomputed by bisection on propagated margins.
+// --numerical-limits adds Table 1 recomputed by bisection on propagated margins. --publish
+// sends the decision's two burns (formation::make_burn_plan) as evade_burn_plan_t on LCM
+// (plan_output.hpp, the same path as the other planners).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +14,8 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "evade/formation/burn_plan.hpp"
+#include "plan_output.hpp"
 #include "evade/formation/formation_scenario.hpp"
 #include "evade/formation/limits.hpp"
 #include "evade/formation/verification.hpp"
@@ -24,6 +28,7 @@ using namespace evade::formation;
 struct PlanFormationOptions {
   CommonOptions common;
   bool numerical_limits = false;
+  PlanOutputOptions out;
 };
 
 nlohmann::json num(double v) {  // +inf (no limit) and NaN become null
@@ -200,8 +205,13 @@ int run_plan_formation(const PlanFormationOptions& o) {
   const PlanInputs in = read_plan_inputs(sc);
   sc.check_all_used();
   const PlanResult r = plan(in, o.numerical_limits);
+  nlohmann::json j = result_json(in, r, o.numerical_limits, sc);
+  if (plan_wanted(o.out)) {
+    const BurnPlan bp = make_burn_plan(in.spec, in.threatened, r.dec, in.propagation, plan_id(o.out));
+    output_plan(o.out, bp, &j);
+  }
   if (o.common.json) {
-    print_json(result_json(in, r, o.numerical_limits, sc));
+    print_json(j);
   } else {
     print_text(in, r);
   }
@@ -216,6 +226,7 @@ const bool kRegistered = register_command(
       add_common_options(app, o->common, "seed3");
       app.add_flag("--numerical-limits", o->numerical_limits,
                    "also compute Table 1 by bisection on propagated margins (slower)");
+      add_plan_output_options(app, o->out);
       return [o]() { return run_plan_formation(*o); };
     });
 

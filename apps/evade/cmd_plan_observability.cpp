@@ -2,8 +2,8 @@
 // Wang, Zhou; eq. 23 and §3). Reads the scenario (scenarios/seed4.yaml), plans with NLopt
 // ISRES (+ local polish) over the chosen objective, compares with no burn and the paper's
 // directions A and B (evade::observability::compare_with_paper), prints JSON, and with
-// --publish sends the plan as evade_burn_plan_t on LCM (evade::lcm_link::publish_burn_plan);
-// the library evade::observability stays LCM-free.
+// --publish sends the plan (observability::make_burn_plan) as evade_burn_plan_t on LCM
+// (plan_output.hpp, shared by the planners); the library evade::observability stays LCM-free.
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -13,8 +13,8 @@
 #include <string>
 
 #include "cli.hpp"
+#include "plan_output.hpp"
 #include "evade/core/constants.hpp"
-#include "evade/lcm_link/burn_plan_publisher.hpp"
 #include "evade/observability/burn_plan.hpp"
 #include "evade/observability/comparison.hpp"
 #include "evade/observability/planner.hpp"
@@ -28,10 +28,7 @@ struct Options {
   CommonOptions common;
   std::string objective;   // overrides objective.name when given
   long seed = -1;          // overrides isres.seed when >= 0
-  bool publish = false;
-  std::string lcm_url;     // empty: LCM default (LCM_DEFAULT_URL or udpm)
-  std::string channel = "EVADE_BURN_PLAN";
-  long seq = 0;
+  PlanOutputOptions out;
 };
 
 // Everything the command reads from the scenario (and the --objective / --seed overrides).
@@ -210,11 +207,7 @@ int run(const Options& o) {
   j["scenario"] = sc.source();
   j["used"] = sc.used();
 
-  if (o.publish) {
-    const std::int64_t utime =
-        lcm_link::publish_burn_plan(o.lcm_url, o.channel, make_burn_plan(res, o.seq), o.seq);
-    j["published"] = {{"channel", o.channel}, {"seq", o.seq}, {"utime", utime}};
-  }
+  if (plan_wanted(o.out)) output_plan(o.out, make_burn_plan(res, plan_id(o.out)), &j);
 
   if (o.common.json) {
     print_json(j);
@@ -233,10 +226,7 @@ const bool kRegistered = register_command(
           ->check(CLI::IsMember({"paper", "los-change", "estimation"}));
       app.add_option("--seed", o->seed, "ISRES seed (default: scenario isres.seed)")
           ->check(CLI::Range(0L, 2147483647L));
-      app.add_flag("--publish", o->publish, "publish the plan as evade_burn_plan_t on LCM");
-      app.add_option("--lcm-url", o->lcm_url, "LCM URL for --publish (default: LCM_DEFAULT_URL)");
-      app.add_option("--channel", o->channel, "LCM channel for --publish")->capture_default_str();
-      app.add_option("--seq", o->seq, "seq field of the published plan")->check(CLI::NonNegativeNumber);
+      add_plan_output_options(app, o->out);
       return [o]() { return run(*o); };
     });
 

@@ -3,6 +3,8 @@
 // the smallest eliminating burn (sec. 4.2, Fig. 8 / Table 3), and the transfer-time study
 // (Fig. 4). I/O only: the scenario is read by threat::read_threat_scenario and everything is
 // computed by threat::run_threat_study (src/threat/); this file parses, prints and plots.
+// --publish sends the evasive burn at V_E (threat::make_burn_plan: one RSW impulse at t0) as
+// evade_burn_plan_t on LCM (plan_output.hpp, the same path as the other planners).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +15,8 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "evade/threat/burn_plan.hpp"
+#include "plan_output.hpp"
 #include "evade/threat/threat_scenario.hpp"
 #include "evade/threat/threat_study.hpp"
 
@@ -31,6 +35,7 @@ struct ThreatCmdOptions {
   std::vector<double> sweep_dv;
   std::vector<double> sweep_transfer;
   std::string plot;
+  PlanOutputOptions out;
   CLI::Option* dv_opt = nullptr;
   CLI::Option* dt_opt = nullptr;
   CLI::Option* imp_opt = nullptr;
@@ -273,7 +278,8 @@ int run_threat_area(const ThreatCmdOptions& o) {
   request.sweep_dv_mps = o.sweep_dv;
   request.sweep_transfer_s = o.sweep_transfer;
   const ThreatStudy study = run_threat_study(in, request, stderr_progress());
-  const nlohmann::json j = study_json(sc, in, study);
+  nlohmann::json j = study_json(sc, in, study);
+  if (plan_wanted(o.out)) output_plan(o.out, make_burn_plan(study.evasion, plan_id(o.out)), &j);
   if (!o.plot.empty() && !write_plot(o.plot, j)) return 1;
   if (o.common.json) {
     print_json(j);
@@ -301,6 +307,7 @@ const bool kRegistered = register_command(
                      "list of transfer times [s] (Fig. 4; with --eliminate: eliminating V_E)")
           ->delimiter(',');
       app.add_option("--plot", o->plot, "PNG file for the sweep plots (scripts/plot_threat.py)");
+      add_plan_output_options(app, o->out);
       return [o]() { return run_threat_area(*o); };
     });
 

@@ -10,14 +10,13 @@
 #include <string>
 #include <vector>
 
-#include <lcm/lcm.h>
-
 #include "evade/evade_burn_plan_t.hpp"
 #include "evade/guidance_lcm/burn_plan_convert.hpp"
 #include "evade/lcm_link/burn_plan_publisher.hpp"
 #include "evade/observability/burn_plan.hpp"
 #include "evade/observability/planner.hpp"
 #include "seed4_problem.hpp"
+#include "support/memq_capture.hpp"
 
 namespace {
 
@@ -26,39 +25,10 @@ using evade::lcm_link::publish_burn_plan;
 
 constexpr const char* kChannel = "EVADE_BURN_PLAN_TEST";
 
-// One memq:// instance with a raw C subscription: the callback only copies the bytes
-// (nothing can throw through LCM's C dispatch); the test decodes them afterwards. (LCM
-// 1.3.1's typed C++ subscription trips UBSan's member-access check inside lcm-cpp-impl.hpp,
-// so the C API is used, as in test/guidance_lcm.)
-class Memq {
+// memq:// delivers only within one instance: publisher and subscriber share it.
+class Memq : public evade::test::MemqCapture {
  public:
-  Memq() : lcm_(lcm_create("memq://")) {
-    if (lcm_ != nullptr) sub_ = lcm_subscribe(lcm_, kChannel, &Memq::on_raw, this);
-  }
-  ~Memq() {
-    if (sub_ != nullptr) lcm_unsubscribe(lcm_, sub_);
-    if (lcm_ != nullptr) lcm_destroy(lcm_);
-  }
-  Memq(const Memq&) = delete;
-  Memq& operator=(const Memq&) = delete;
-  bool good() const { return lcm_ != nullptr && sub_ != nullptr; }
-  lcm_t* get() const { return lcm_; }
-  /// Delivers everything queued and returns the frames received so far.
-  const std::vector<std::vector<std::uint8_t>>& drain() {
-    while (lcm_handle_timeout(lcm_, 100) > 0) {
-    }
-    return frames_;
-  }
-
- private:
-  static void on_raw(const lcm_recv_buf_t* rbuf, const char* /*channel*/, void* user) {
-    auto* self = static_cast<Memq*>(user);
-    const auto* p = static_cast<const std::uint8_t*>(rbuf->data);
-    self->frames_.emplace_back(p, p + rbuf->data_size);
-  }
-  lcm_t* lcm_;
-  lcm_subscription_t* sub_ = nullptr;
-  std::vector<std::vector<std::uint8_t>> frames_;
+  Memq() : MemqCapture(kChannel) {}
 };
 
 // `evade plan observability --seed 3` on scenarios/seed4.yaml (paper objective, ISRES with

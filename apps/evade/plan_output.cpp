@@ -1,0 +1,56 @@
+// --publish of the planners (plan_output.hpp).
+#include "plan_output.hpp"
+
+#include "evade/guidance/plan_executor.hpp"
+#include "evade/lcm_link/burn_plan_publisher.hpp"
+
+namespace evade::cli {
+
+void add_plan_output_options(CLI::App& app, PlanOutputOptions& o) {
+  app.add_flag("--publish", o.publish, "publish the plan as evade_burn_plan_t on LCM");
+  app.add_option("--lcm-url", o.lcm_url, "LCM URL for --publish (default: LCM_DEFAULT_URL)");
+  app.add_option("--channel", o.channel, "LCM channel for --publish")->capture_default_str();
+  app.add_option("--seq", o.seq, "seq field (plan id) of the published plan")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--epoch-utime", o.epoch_utime_us,
+                 "utime [us] of the plan's t = 0 (default: the publish time)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--frame", o.frame, "frame the node flies the plan in: rsw | eci")
+      ->check(CLI::IsMember({"rsw", "eci"}))
+      ->capture_default_str();
+}
+
+bool plan_wanted(const PlanOutputOptions& o) { return o.publish; }
+
+std::int64_t plan_id(const PlanOutputOptions& o) { return o.seq; }
+
+nlohmann::json impulses_json(const BurnPlan& plan) {
+  nlohmann::json a = nlohmann::json::array();
+  for (int i = 0; i < plan.n_impulses; ++i) {
+    const ImpulsiveBurn& b = plan.impulses[static_cast<std::size_t>(i)];
+    const Vec3& r = b.dv_rsw_mps;
+    const Vec3& e = b.dv_eci_mps;
+    a.push_back({{"t_s", b.t_s},
+                 {"dv_rsw_mps", {r.x(), r.y(), r.z()}},
+                 {"dv_eci_mps", b.dv_eci_valid ? nlohmann::json({e.x(), e.y(), e.z()})
+                                               : nlohmann::json(nullptr)}});
+  }
+  return a;
+}
+
+void output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j) {
+  if (!o.publish) return;
+  lcm_link::PlanStamp stamp;
+  stamp.epoch_utime = o.epoch_utime_us;
+  stamp.frame = o.frame == "eci" ? guidance::PlanFrame::kEci : guidance::PlanFrame::kRsw;
+  const std::int64_t utime = lcm_link::publish_burn_plan(o.lcm_url, o.channel, plan, o.seq, stamp);
+  (*j)["published"] = {{"channel", o.channel},
+                       {"seq", o.seq},
+                       {"utime", utime},
+                       {"epoch_utime", o.epoch_utime_us != 0 ? o.epoch_utime_us : utime},
+                       {"frame", o.frame},
+                       {"n_impulses", plan.n_impulses},
+                       {"impulses", impulses_json(plan)}};
+}
+
+}  // namespace evade::cli
