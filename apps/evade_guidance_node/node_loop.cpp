@@ -39,6 +39,16 @@ void progress_line(const guidance_lcm::GuidanceNode& node) {
                static_cast<long long>(node.compute_stats().overruns()));
 }
 
+// drain() < 0 ends the loop: SIGINT/SIGTERM arriving during LCM's select() makes it fail with
+// EINTR, which is the requested stop ("signal", exit 0; it used to exit 1 and made one run in
+// about twenty of `scripts/hil` fail); the end of a file:// log is a clean stop too; anything
+// else is a receive error.
+void end_on_drain_failure(const LoopLimits& lim, bool stopping, LoopResult* res) {
+  if (stopping) return;
+  res->exit_code = lim.input_is_log ? 0 : 1;
+  res->why = lim.input_is_log ? "end of LCM input" : "LCM receive error";
+}
+
 }  // namespace
 
 bool try_realtime(int priority) {
@@ -83,9 +93,8 @@ LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, cons
     node.record_wakeup_latency(late_us);
     if (res.wakeup_us.size() < res.wakeup_us.capacity()) res.wakeup_us.push_back(late_us);
 
-    if (node.drain() < 0) {  // a file:// log ends this way: a clean stop, not a failure
-      res.exit_code = lim.input_is_log ? 0 : 1;
-      res.why = lim.input_is_log ? "end of LCM input" : "LCM receive error";
+    if (node.drain() < 0) {
+      end_on_drain_failure(lim, *stop != 0, &res);
       break;
     }
     node.run_cycle(now_ns(CLOCK_REALTIME) / 1000);
