@@ -36,7 +36,7 @@ def main():
     print(f"real-time miss {j['miss_m']:.4f} m (paper {PAPER_MISS_M} m), dv {j['dv_mps']:.4f} m/s,"
           f" {j['cycles']} commands applied; command age p50 {j['command_age_ms_p50']:.3f} ms "
           f"p99 {j['command_age_ms_p99']:.3f} ms; node overruns {n['overruns']}; sim late steps "
-          f"{j['sim_late_steps']} of {j['sim_steps']}; inputs {i}")
+          f"{j['sim_late_steps']} of {j['sim_steps']}; inputs {i}; scheduler {j['scheduler']}")
     failures = []
     if abs(j["miss_m"] - PAPER_MISS_M) > 0.01 * PAPER_MISS_M:
         failures.append(f"miss {j['miss_m']} m not within 1 % of {PAPER_MISS_M} m")
