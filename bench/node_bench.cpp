@@ -10,6 +10,8 @@
 //        ip route add 224.0.0.0/4 dev lo; URL="udpm://239.255.76.67:7667?ttl=0";
 //        evade_guidance_node --lcm-url "$URL" --lockstep --quiet --stale-limit-s 60 &
 //        EVADE_BENCH_UDPM_URL="$URL" node_bench --benchmark_filter=Udpm; kill %1'
+//    prefixed with `chrt -f 50` (as root) both processes run SCHED_FIFO, which the namespace
+//    alone refuses; docs/PERFORMANCE.md has both and udpm_latency_stages the stage split.
 // Loop jitter (wake-up latency) and overruns at 50/200 Hz come from the node itself:
 //   evade_guidance_node --lcm-url memq:// --rate-hz 200 --max-cycles 10000 --stats-json
 #include <benchmark/benchmark.h>
