@@ -30,6 +30,13 @@ void check(const PlanRunConfig& cfg) {
   if (!(cfg.duration_s > 0.0 && cfg.duration_s <= 1e7))
     throw std::invalid_argument("plan run: duration_s must be in (0, 1e7]");
   cfg.integrator.validate();
+  for (std::size_t i = 0; i < cfg.sample_t_s.size(); ++i) {
+    const double t = cfg.sample_t_s[i];
+    if (!std::isfinite(t) || t < 0.0 || t > cfg.duration_s || (i > 0 && t < cfg.sample_t_s[i - 1]))
+      throw std::invalid_argument("plan run: sample_t_s[" + std::to_string(i) + "] = " +
+                                  std::to_string(t) + " must be finite, ascending and in [0, "
+                                  "duration_s]");
+  }
 }
 
 class PlanLoop {
@@ -48,12 +55,14 @@ class PlanLoop {
     for (long k = 0; k < n; ++k) {
       const std::int64_t utime = kPlanRunUtime0 + k * cycle_us_;
       if (hook) hook(k, utime);
+      record(1e-6 * static_cast<double>(k * cycle_us_));
       exchange(utime);
       integrate(1e-6 * static_cast<double>(k * cycle_us_),
                 1e-6 * static_cast<double>((k + 1) * cycle_us_));
       ++res_.cycles;
     }
     close_burn(1e-6 * static_cast<double>(n * cycle_us_));
+    record(1e-6 * static_cast<double>(n * cycle_us_), true);
     res_.satellite_end = first(x_);
     res_.other_end = second(x_);
     res_.has_final_status = g_.status(&res_.final_status);
@@ -88,6 +97,14 @@ class PlanLoop {
     } else {
       close_burn(t);
     }
+  }
+
+  // Records every sample due at cycle start t_s (all that remain at the end).
+  void record(double t_s, bool end = false) {
+    const std::vector<double>& want = cfg_.sample_t_s;
+    while (res_.samples.size() < want.size() &&
+           (end || want[res_.samples.size()] <= t_s + 1e-9))
+      res_.samples.push_back({t_s, first(x_), second(x_)});
   }
 
   void close_burn(double t_s) {

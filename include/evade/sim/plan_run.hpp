@@ -30,6 +30,16 @@ struct PlanRunConfig {
   double duration_s = 100.0;   ///< run length
   ActuatorConfig actuator;
   AdaptiveOptions integrator = AdaptiveOptions::tight();
+  /// Times [s] at which both objects are recorded (PlanRunResult::samples): each at the
+  /// first cycle start at or after it (or the run's end); finite, ascending, in [0, duration].
+  std::vector<double> sample_t_s;
+};
+
+/// Both objects' truth at one cycle start.
+struct PlanRunSample {
+  double t_s = 0.0;  ///< the cycle start the sample was taken at [s]
+  StateEci satellite;
+  StateEci other;
 };
 
 /// One burn as the actuator applied it: a run of consecutive cycles with thrust.
@@ -44,6 +54,7 @@ struct PlanRunResult {
   std::vector<DeliveredBurn> burns;
   StateEci satellite_end;
   StateEci other_end;
+  std::vector<PlanRunSample> samples;  ///< one per PlanRunConfig::sample_t_s
   long cycles = 0;
   guidance::GuidanceStatus final_status;
   bool has_final_status = false;
