@@ -162,6 +162,8 @@ void add_realtime(const sim::RealtimeResult& r, nlohmann::json* j) {
   (*j)["command_age_ms_p99"] = r.command_age_ms_p99;
   (*j)["command_age_ms_max"] = r.command_age_ms_max;
   (*j)["commands_received"] = r.commands_received;
+  (*j)["commands_discarded_old"] = r.commands_discarded_old;
+  (*j)["commands_discarded_malformed"] = r.commands_discarded_malformed;
   (*j)["sim_steps"] = r.steps;
   (*j)["sim_late_steps"] = r.late_steps;
   (*j)["sim_late_max_ms"] = r.late_max_ms;

@@ -95,6 +95,8 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
     return true;
   }
   long commands_received() const override { return received_; }
+  long commands_discarded_old() const override { return discarded_old_; }
+  long commands_discarded_malformed() const override { return discarded_malformed_; }
 
  private:
   [[noreturn]] void fail(const char* what) const {
@@ -105,8 +107,9 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
     auto* self = static_cast<RealtimeLcmLink*>(user);
     const std::int64_t t = self->now_us();
     bool have = self->received_ > 0;
-    if (receive_command(rbuf, &have, &self->last_seq_, &self->newest_.cmd) !=
-        CommandVerdict::kAccepted) {
+    const CommandVerdict v = receive_command(rbuf, &have, &self->last_seq_, &self->newest_.cmd);
+    if (v != CommandVerdict::kAccepted) {
+      ++(v == CommandVerdict::kOld ? self->discarded_old_ : self->discarded_malformed_);
       return;
     }
     ++self->received_;
@@ -136,6 +139,7 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
   sim::ReceivedCommand newest_{};
   bool have_new_ = false;
   long received_ = 0;
+  long discarded_old_ = 0, discarded_malformed_ = 0;
   std::int64_t last_seq_ = 0;
   evade_guidance_status_t status_{};
   bool have_status_ = false;

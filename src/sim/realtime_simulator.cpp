@@ -193,6 +193,8 @@ void RealtimeLoop::account_lateness(std::int64_t utime) {
 void RealtimeLoop::finish() {
   res_.sim.cycles = res_.commands_applied;
   res_.commands_received = link_.commands_received();
+  res_.commands_discarded_old = link_.commands_discarded_old();
+  res_.commands_discarded_malformed = link_.commands_discarded_malformed();
   res_.command_age_ms_p50 = quantile(ages_ms_, 0.50);
   res_.command_age_ms_p99 = quantile(ages_ms_, 0.99);
   res_.command_age_ms_max = quantile(ages_ms_, 1.0);

@@ -43,6 +43,11 @@ class RealtimeLink {
   }
   /// Commands received in total (including those replaced before they were taken).
   virtual long commands_received() const = 0;
+  /// Commands discarded on receipt because they were not newer than the newest one already
+  /// received (duplicated or overtaken on the network): never applied.
+  virtual long commands_discarded_old() const { return 0; }
+  /// Commands discarded on receipt because they failed decoding or validation: never applied.
+  virtual long commands_discarded_malformed() const { return 0; }
 };
 
 }  // namespace evade::sim

@@ -17,6 +17,8 @@ namespace evade::sim {
 struct RealtimeResult {
   SimResult sim;                  ///< sim.cycles = commands applied
   long commands_received = 0;     ///< by the link, including replaced ones
+  long commands_discarded_old = 0;        ///< not newer than one received before (never applied)
+  long commands_discarded_malformed = 0;  ///< failed decoding or validation (never applied)
   long commands_applied = 0;      ///< taken by the actuator (newest at each wake-up)
   double command_age_ms_p50 = 0.0;  ///< apply time − command utime, over applied commands
   double command_age_ms_p99 = 0.0;
