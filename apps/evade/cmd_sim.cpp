@@ -164,6 +164,7 @@ void add_realtime(const sim::RealtimeResult& r, nlohmann::json* j) {
   (*j)["commands_received"] = r.commands_received;
   (*j)["commands_discarded_old"] = r.commands_discarded_old;
   (*j)["commands_discarded_malformed"] = r.commands_discarded_malformed;
+  (*j)["command_timeouts"] = r.command_timeouts;
   (*j)["sim_steps"] = r.steps;
   (*j)["sim_late_steps"] = r.late_steps;
   (*j)["sim_late_max_ms"] = r.late_max_ms;

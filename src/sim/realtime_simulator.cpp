@@ -57,7 +57,8 @@ class RealtimeLoop {
         sample_us_(std::llround(1e6 / cfg.sensor.rate_hz)),
         sensor_lat_us_(std::llround(cfg.sensor.latency_s * 1e6)),
         act_lat_us_(std::llround(cfg.actuator.latency_s * 1e6)),
-        late_tol_us_(std::llround(cfg.realtime.late_tolerance_s * 1e6)) {
+        late_tol_us_(std::llround(cfg.realtime.late_tolerance_s * 1e6)),
+        timeout_us_(std::llround(cfg.realtime.command_timeout_s * 1e6)) {
     if (sample_us_ < 1) throw std::invalid_argument("sim: sensor rate too high");
   }
   RealtimeLoop(const RealtimeLoop&) = delete;
@@ -74,6 +75,7 @@ class RealtimeLoop {
   void advance_truth_to(std::int64_t utime);
   void integrate_segment(std::int64_t seg_start_us, std::int64_t seg_end_us);
   void apply_due_accel(std::int64_t utime);
+  void apply_command_timeout(std::int64_t utime);
   void sample_and_deliver(std::int64_t utime);
   void report(std::int64_t utime, const guidance::AnglesMeasurement* meas);
   void account_lateness(std::int64_t utime);
@@ -90,7 +92,8 @@ class RealtimeLoop {
   std::int64_t end_us_ = 0;        // max_duration_s
   AngleSensor sensor_;
   Actuator actuator_;
-  const std::int64_t sample_us_, sensor_lat_us_, act_lat_us_, late_tol_us_;
+  const std::int64_t sample_us_, sensor_lat_us_, act_lat_us_, late_tol_us_, timeout_us_;
+  std::int64_t cut_at_us_ = kNever;  // the thrust in force is cut then (command timeout)
   std::int64_t next_sample_us_ = 0;
   std::deque<PendingMeas> meas_queue_;
   std::deque<PendingAccel> accel_queue_;
@@ -102,6 +105,7 @@ std::int64_t RealtimeLoop::next_event_us() const {
   std::int64_t ev = std::min({next_sample_us_, stop_us_, end_us_});
   if (!meas_queue_.empty()) ev = std::min(ev, meas_queue_.front().at_us);
   if (!accel_queue_.empty()) ev = std::min(ev, accel_queue_.front().at_us);
+  ev = std::min(ev, cut_at_us_);
   return std::max(ev, truth_us_);
 }
 
@@ -124,8 +128,19 @@ void RealtimeLoop::apply_due_accel(std::int64_t utime) {
     cmd_in_force_ = p.cmd;
     ages_ms_.push_back(1e-3 * static_cast<double>(p.at_us - p.cmd.utime_us));
     ++res_.commands_applied;
+    if (timeout_us_ > 0) cut_at_us_ = p.at_us + timeout_us_;
     accel_queue_.pop_front();
   }
+}
+
+// Loss-of-command timeout: no new command took effect for command_timeout_s, so the thrust
+// in force is cut (counted once per cut; the next command restores it).
+void RealtimeLoop::apply_command_timeout(std::int64_t utime) {
+  if (utime < cut_at_us_) return;
+  cut_at_us_ = kNever;
+  if (truth_.thrust().isZero(0.0)) return;
+  truth_.set_thrust(Vec3::Zero());
+  ++res_.command_timeouts;
 }
 
 // Integrates truth to utime (constant thrust: callers stop at every actuator change).
@@ -221,6 +236,7 @@ void RealtimeLoop::run() {
     advance_truth_to(target);
     if (truth_us_ >= stop_us_) break;
     apply_due_accel(truth_us_);
+    apply_command_timeout(truth_us_);
     sample_and_deliver(truth_us_);
     account_lateness(truth_us_);
   }

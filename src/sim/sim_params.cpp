@@ -43,6 +43,10 @@ const Param<C> kRows[] = {
     EVADE_PARAM_REAL(C, realtime.late_tolerance_s, "s", 1e-6, 1.0, false,
                      "real-time runs: a step processed later than this after its wall-clock "
                      "time counts as late (sim_late_steps)"),
+    EVADE_PARAM_REAL(C, realtime.command_timeout_s, "s", 0.0, 3600.0, false,
+                     "real-time runs: the thruster drive's loss-of-command timeout, zero thrust "
+                     "once no new command has taken effect for this long (0: hold the last "
+                     "command indefinitely)"),
     EVADE_PARAM_REAL(C, integrator.rel_tol, "-", 1e-15, 1e-3, false,
                      "relative tolerance of the truth integrator (DOP853)"),
     EVADE_PARAM_REAL(C, integrator.abs_tol, "m", 1e-15, 1.0, false,

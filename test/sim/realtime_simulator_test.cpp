@@ -62,6 +62,8 @@ class VirtualLink : public sim::RealtimeLink {
   long commands_received() const override { return received_; }
 
   std::int64_t lag_us = 0;  // now_us() reads this much late: every step is late by it
+  // Commands of cycles in [drop_from_us, drop_to_us) are lost on the way (a link blackout).
+  std::int64_t drop_from_us = 0, drop_to_us = 0;
 
 
  private:
@@ -76,7 +78,8 @@ class VirtualLink : public sim::RealtimeLink {
     in_flight_ = law_.step(in_, c);
     in_.has_measurement = false;
     arrival_ = c + transport_us_;
-    pending_ = true;  // a newer cycle replaces a command still in flight (never here)
+    // A newer cycle replaces a command still in flight (never here); a dropped one is lost.
+    pending_ = !(c >= drop_from_us && c < drop_to_us);
   }
 
   guidance::GuidanceLaw law_;
@@ -148,6 +151,47 @@ TEST(RealtimeSimulator, FallingBehindIsCountedAndNeverSlowsTime) {
   // Same schedule of truth, sensor and commands: the same run.
   EXPECT_EQ(b.sim.miss_m, a.sim.miss_m);
   EXPECT_EQ(b.sim.tca_s, a.sim.tca_s);
+}
+
+// realtime.command_timeout_s: when the commands stop arriving (here for 2 s from 3 s after
+// the start, the HIL bench's blackout), the plain zero-order hold keeps the last thrust on, the
+// timeout cuts it 0.1 s after the last command took effect until the next one arrives. The
+// thrust time lost is exactly (first arrival after the gap) − (last arrival before it + 0.1 s)
+// on the virtual schedule, so the Δv deficit is that times 1 m/s² (less the closest
+// approach's shift, up to which Δv is counted).
+TEST(RealtimeSimulator, CommandTimeoutCutsTheThrustWhenCommandsStopArriving) {
+  sim::SimConfig c = seed0(1.0, 10.0);
+  const std::int64_t phase = 7000, transport = 150, period = 20000;
+  const std::int64_t start = 1000;  // the virtual run's first instant (epoch 1 µs, next ms)
+  const std::int64_t from = start + 3000000, to = start + 5000000;
+  auto run = [&](double timeout_s, bool drop) {
+    c.realtime.command_timeout_s = timeout_s;
+    VirtualLink link(c.guidance, phase, transport);
+    if (drop) {
+      link.drop_from_us = from;
+      link.drop_to_us = to;
+    }
+    return sim::run_realtime_simulation(c, link);
+  };
+  const sim::RealtimeResult clean = run(0.1, false);
+  const sim::RealtimeResult held = run(0.0, true);
+  const sim::RealtimeResult cut = run(0.1, true);
+  const std::int64_t last_before = phase + (from - 1 - phase) / period * period + transport;
+  const std::int64_t first_after = phase + (to - phase + period - 1) / period * period + transport;
+  const double lost_s = 1e-6 * static_cast<double>(first_after - (last_before + 100000));
+  std::printf("dv clean %.6f, held %.6f, cut %.6f m/s (expected deficit %.6f m/s); miss clean "
+              "%.4f, held %.4f, cut %.4f m\n", clean.sim.dv_mps, held.sim.dv_mps, cut.sim.dv_mps,
+              lost_s, clean.sim.miss_m, held.sim.miss_m, cut.sim.miss_m);
+  EXPECT_EQ(clean.command_timeouts, 0);  // a command every 20 ms never times out at 0.1 s
+  EXPECT_EQ(held.command_timeouts, 0);
+  EXPECT_EQ(cut.command_timeouts, 1);
+  // Δv is counted up to the closest approach, which a different deflection moves: the thrust
+  // runs on for the shift of the closest approach (µs here) at 1 m/s².
+  // The hold fills the gap (the thrust direction frozen for 2 s moves the approach by ~0.2 µs).
+  EXPECT_NEAR(held.sim.dv_mps - clean.sim.dv_mps, (held.sim.tca_s - clean.sim.tca_s) * 1.0, 1e-9);
+  const double tca_shift_s = cut.sim.tca_s - clean.sim.tca_s;
+  EXPECT_NEAR(clean.sim.dv_mps - cut.sim.dv_mps, (lost_s - tca_shift_s) * 1.0, 1e-9);
+  EXPECT_LT(cut.sim.miss_m, clean.sim.miss_m);
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 // applies the newest command it has received (zero-order hold) actuator.latency_s after its
 // receipt and records the command's age (apply time − the command's utime). When the
 // simulator cannot keep up, it never slows time: the step is processed late, counted
-// (late_steps, beyond realtime.late_tolerance_s), and the run goes on.
+// (late_steps, beyond realtime.late_tolerance_s), and the run goes on. With
+// realtime.command_timeout_s > 0 the thruster drive cuts the thrust when no new command has
+// taken effect for that long (a lost link must not leave the thruster firing).
 #pragma once
 
 #include "evade/sim/realtime_link.hpp"
@@ -20,6 +22,7 @@ struct RealtimeResult {
   long commands_discarded_old = 0;        ///< not newer than one received before (never applied)
   long commands_discarded_malformed = 0;  ///< failed decoding or validation (never applied)
   long commands_applied = 0;      ///< taken by the actuator (newest at each wake-up)
+  long command_timeouts = 0;      ///< thrust cut by realtime.command_timeout_s (no new command)
   double command_age_ms_p50 = 0.0;  ///< apply time − command utime, over applied commands
   double command_age_ms_p99 = 0.0;
   double command_age_ms_max = 0.0;

@@ -57,6 +57,9 @@ struct EncounterConfig {
 /// wall-clock pace; a step whose outputs leave later than this after its due time is late.
 struct RealtimeConfig {
   double late_tolerance_s = 1e-3;  ///< lateness above which a step counts in sim_late_steps
+  /// Loss-of-command timeout of the thruster drive: zero thrust once no new command has taken
+  /// effect for this long (0: hold the last command indefinitely, the plain zero-order hold).
+  double command_timeout_s = 0.0;
 };
 
 struct SimConfig {
