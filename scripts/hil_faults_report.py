@@ -62,6 +62,7 @@ def load_case(d, blackout_at):
     end = start + round(1e6 * (float(rows[-1]["t_s"]) - t0)) if rows else start
     j["commands_discarded_old"] = sim["commands_discarded_old"]
     j["commands_discarded_malformed"] = sim["commands_discarded_malformed"]
+    j["sim_command_timeouts"] = sim["command_timeouts"]
     log_path = os.path.join(d, "relay_log.jsonl")
     cmds = []  # the node's commands over the simulator's run (its last sample included)
     if os.path.exists(log_path):
@@ -135,7 +136,7 @@ def failures(c, j):
                  f"{j['relay_inputs_delivered']}")
     if j["commands_discarded_malformed"]:
         f.append(f"the simulator received {j['commands_discarded_malformed']} malformed commands")
-    if c == "blackout" and "relay" in j:
+    if c.startswith("blackout") and "relay" in j:
         if not j["blackout_all_safe_zero_thrust"]:
             f.append("not SAFE with zero thrust throughout the blackout")
         if j["blackout_evade_again_after_end_s"] is None:
@@ -155,8 +156,9 @@ def table(res, meta):
     print("| case | miss m | Δ clean % | Δv m/s | node mode history (s from start) | inputs recv = "
           "cons + rej + stale + sup + drop | stale: dup / out-of-order / old utime | seq gaps | "
           "relay → node inputs (lost, dup) | max meas. age in a thrust cmd ms | cmds to sim: "
-          "delivered (not newer) / accepted / discarded old | overruns |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "delivered (not newer) / accepted / discarded old | simulator thrust in the blackout s | "
+          "overruns |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     clean = res.get("clean", {}).get("miss_m")
     for c, j in res.items():
         i, br = j["inputs"], j["inputs"]["by_reason"]
@@ -166,6 +168,8 @@ def table(res, meta):
                    for k in ("A>B EVADE_NAV", "A>B EVADE_ANGLES"))
         dup = sum(rl.get(k, {}).get("duplicated", 0) for k in ("A>B EVADE_NAV", "A>B EVADE_ANGLES"))
         age = j.get("thrust_max_input_age_ms")
+        held = (f"{CYCLE_S * j['sim_thrust_samples_in_blackout_window']:.2f}"
+                if c.startswith("blackout") else "–")
         print(f"| {c} | {j['miss_m']:.4f} | {d} | {j['dv_mps']:.3f} | {hist_str(j['mode_history'])} "
               f"| {i['received']} = {i['consumed']} + {i['rejected']} + {i['stale']} + "
               f"{i['superseded']} + {i['dropped']} | {br.get('duplicate_seq', 0)} / "
@@ -173,7 +177,7 @@ def table(res, meta):
               f"{j.get('relay_inputs_delivered', '–')} ({lost}, {dup}) | "
               f"{'–' if age is None else f'{age:.1f}'} | {j.get('relay_cmds_delivered', '–')} "
               f"({j.get('relay_cmds_delivered_not_newer', '–')}) / {j['sim_commands_received']} / "
-              f"{j['commands_discarded_old']} | {j['node_overruns']} |")
+              f"{j['commands_discarded_old']} | {held} | {j['node_overruns']} |")
 
 
 def main():
@@ -190,7 +194,7 @@ def main():
     res, bad = {}, {}
     for c in a.cases:
         j, cmds, start = load_case(os.path.join(a.out, c), a.blackout_at_s)
-        if c == "blackout" and cmds:
+        if c.startswith("blackout") and cmds:
             check_blackout(j, cmds, start, a.blackout_at_s)
         res[c] = j
         f = failures(c, j)
