@@ -7,7 +7,8 @@
 //  - With the node's default URL the documented worst burst (5,000 input messages, then a
 //    1 MiB message) loses nothing in the kernel, and every message is accounted by the node
 //    (received = consumed + rejected + stale + superseded + dropped, no seq gap; the 1 MiB
-//    message is rejected as oversize).
+//    message is rejected as oversize); the node warns that the kernel caps its 8 MiB request
+//    exactly when net.core.rmem_max is below it.
 //  - Control: the same burst with LCM's default buffer (rmem_default, 212 992 B) is partly
 //    dropped by the kernel: the test above can fail, and node received + kernel drops = sent.
 //  - When the kernel caps the request (net.core.rmem_max) the node prints a warning naming the
@@ -143,10 +144,14 @@ TEST(UdpmReceiveBuffer, DefaultUrlHoldsTheDocumentedBurstAndEveryMessageIsCounte
               kBurstMessages, q1.rx_bytes, static_cast<double>(q1.rx_bytes) / kBurstMessages,
               q1.drops, q2.rx_bytes, q2.drops - q1.drops, rmem_max());
   ASSERT_EQ(q1.sockets, 1) << "exactly the node's receive socket is bound to 7667 while stopped";
+  // The default request is capped exactly when rmem_max is below it: the node says so then,
+  // and only then.
+  EXPECT_EQ(err.find("caps the UDP receive buffer") != std::string::npos,
+            rmem_max() < kNodeDefaultRequestB)
+      << err;
   if (q2.drops > 0 && rmem_max() < kNodeDefaultRequestB) {
     // The property needs the buffer the node requests; this kernel refuses it, and the node
-    // must have said so (that is what an operator relies on).
-    EXPECT_NE(err.find("caps the UDP receive buffer"), std::string::npos) << err;
+    // has said so (checked above; that is what an operator relies on).
     GTEST_SKIP() << "net.core.rmem_max = " << rmem_max() << " B caps the node's "
                  << kNodeDefaultRequestB << " B request and the kernel dropped " << q2.drops
                  << " datagrams of the burst (the node warned); raise it with sysctl -w "
