@@ -8,6 +8,7 @@
 //   evade sim --scenario seed0 --noise-rad 50e-6 --no-rates --runs 200 --seed 7 --json
 //   evade sim --scenario seed0 --csv run.csv --plot run.png
 //   evade sim --scenario seed0 --lcm URL --realtime --json   (node at its own fixed rate)
+//   evade sim --plan plan.json --plan-epoch-s 10 --json       (a burn plan, sim_plan.hpp)
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "sim_plan.hpp"
 #include "evade/distributed/distributed_monte_carlo.hpp"
 #include "evade/guidance/guidance_law.hpp"
 #include "evade/lcm_link/realtime_lcm_link.hpp"
@@ -57,6 +59,7 @@ struct SimOptions {
   bool lockstep = true;
   double lcm_timeout_s = 5.0;
   bool realtime = false;
+  evade::cli::SimPlanOptions plan;
 };
 
 std::string num(double v) {
@@ -97,7 +100,16 @@ sim::SimOverrides parse_overrides(const SimOptions& o) {
   return ov;
 }
 
+void check_plan_options(const SimOptions& o) {
+  if (!o.plan.plan_file.empty() && (!o.lcm_url.empty() || o.runs > 0 || !o.csv.empty())) {
+    throw std::invalid_argument("--plan runs the plan in process and cannot be combined with "
+                                "--lcm, --runs or --csv (to fly a plan on the node, publish "
+                                "it with `evade plan ... --publish`)");
+  }
+}
+
 void check_run_options(const SimOptions& o) {
+  check_plan_options(o);
   if (o.runs < 0 || o.runs > 1000000) {
     throw std::invalid_argument("--runs = " + std::to_string(o.runs) + " outside [0, 1000000]");
   }
@@ -279,11 +291,26 @@ void print_text(const SimOptions& o, const sim::SimResult& r, const nlohmann::js
   }
 }
 
+// --plan: the plan file flown by the in-process law + executor on the scenario's objects.
+int run_plan(const SimOptions& o, const config::Scenario& sc, const sim::SimConfig& cfg) {
+  nlohmann::json j;
+  const int rc = evade::cli::run_sim_plan(o.plan, cfg, &j);
+  j["scenario"] = sc.source();
+  j["scenario_used"] = sc.used();
+  if (o.common.json) {
+    cli::print_json(j);
+  } else {
+    evade::cli::print_sim_plan(j);
+  }
+  return rc;
+}
+
 int run_sim(const SimOptions& o) {
   config::Scenario sc = cli::load_scenario(o.common);
   sim::apply_sim_overrides(parse_overrides(o), &sc);
   check_run_options(o);
   const sim::SimConfig cfg = sim::read_sim_config(sc);
+  if (!o.plan.plan_file.empty()) return run_plan(o, sc, cfg);
 
   std::optional<sim::RealtimeResult> rt;
   sim::SimResult r;
@@ -340,6 +367,15 @@ const bool kRegistered = evade::cli::register_command(
       app.add_flag("--realtime", o->realtime,
                    "with --lcm: truth at wall-clock pace, the node at its own fixed rate "
                    "(no lockstep); adds command_age_ms_* and sim_late_steps");
+      app.add_option("--plan", o->plan.plan_file,
+                     "fly this burn-plan file (`evade plan ... --plan-out`) with the in-process "
+                     "law + plan executor on the scenario's objects");
+      app.add_option("--plan-epoch-s", o->plan.epoch_s,
+                     "with --plan: the plan's t = 0 this long after the run starts [s]")
+          ->capture_default_str();
+      app.add_option("--plan-after-s", o->plan.after_s,
+                     "with --plan: run this long after the last burn [s]")
+          ->capture_default_str();
       return [o]() { return run_sim(*o); };
     });
 

@@ -3,6 +3,7 @@
 
 #include "evade/guidance/plan_executor.hpp"
 #include "evade/lcm_link/burn_plan_publisher.hpp"
+#include "evade/sim/plan_file.hpp"
 
 namespace evade::cli {
 
@@ -18,9 +19,11 @@ void add_plan_output_options(CLI::App& app, PlanOutputOptions& o) {
   app.add_option("--frame", o.frame, "frame the node flies the plan in: rsw | eci")
       ->check(CLI::IsMember({"rsw", "eci"}))
       ->capture_default_str();
+  app.add_option("--plan-out", o.plan_out,
+                 "write the plan as a plan file (JSON) for `evade sim --plan FILE`");
 }
 
-bool plan_wanted(const PlanOutputOptions& o) { return o.publish; }
+bool plan_wanted(const PlanOutputOptions& o) { return o.publish || !o.plan_out.empty(); }
 
 std::int64_t plan_id(const PlanOutputOptions& o) { return o.seq; }
 
@@ -39,10 +42,16 @@ nlohmann::json impulses_json(const BurnPlan& plan) {
 }
 
 void output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j) {
+  const guidance::PlanFrame frame =
+      o.frame == "eci" ? guidance::PlanFrame::kEci : guidance::PlanFrame::kRsw;
+  if (!o.plan_out.empty()) {
+    sim::write_plan_file(o.plan_out, sim::PlanFile{plan, frame});
+    (*j)["plan_file"] = o.plan_out;
+  }
   if (!o.publish) return;
   lcm_link::PlanStamp stamp;
   stamp.epoch_utime = o.epoch_utime_us;
-  stamp.frame = o.frame == "eci" ? guidance::PlanFrame::kEci : guidance::PlanFrame::kRsw;
+  stamp.frame = frame;
   const std::int64_t utime = lcm_link::publish_burn_plan(o.lcm_url, o.channel, plan, o.seq, stamp);
   (*j)["published"] = {{"channel", o.channel},
                        {"seq", o.seq},

@@ -1,6 +1,7 @@
 // What `evade plan observability|threat-area|formation` do with the plan they made (a
 // BurnPlan from the planner's library): --publish sends it as evade_burn_plan_t on LCM
-// (lcm_link::publish_burn_plan, the same path for every planner). Shared options, no domain
+// (lcm_link::publish_burn_plan, the same path for every planner); --plan-out writes it as a
+// plan file (sim/plan_file.hpp) that `evade sim --plan FILE` flies. Shared options, no domain
 // logic.
 #pragma once
 
@@ -21,20 +22,23 @@ struct PlanOutputOptions {
   long seq = 0;                               ///< message seq = plan id
   long long epoch_utime_us = 0;               ///< utime of plan t = 0; 0: the publish time
   std::string frame = "rsw";                  ///< frame the node flies: rsw | eci
+  std::string plan_out;                       ///< plan file to write; empty: none
 };
 
-/// Adds --publish, --lcm-url, --channel, --seq, --epoch-utime, --frame.
+/// Adds --publish, --lcm-url, --channel, --seq, --epoch-utime, --frame, --plan-out.
 void add_plan_output_options(CLI::App& app, PlanOutputOptions& o);
 
-/// True when the options ask for the plan (--publish).
+/// True when the options ask for the plan (--publish or --plan-out).
 bool plan_wanted(const PlanOutputOptions& o);
 
 /// The plan number the options give (--seq).
 std::int64_t plan_id(const PlanOutputOptions& o);
 
-/// With --publish: publishes plan and adds "published" (channel, seq, utime, epoch_utime,
-/// frame, n_impulses) to *j. Throws std::invalid_argument for a plan the message cannot
-/// carry (e.g. --frame eci without ECI Δv), std::runtime_error when LCM fails.
+/// With --plan-out: writes the plan file and adds "plan_file" to *j. With --publish:
+/// publishes plan and adds "published" (channel, seq, utime, epoch_utime, frame, impulses)
+/// to *j. Throws std::invalid_argument for a plan the file or the message cannot carry (e.g.
+/// --frame eci without ECI Δv) or a file that cannot be written, std::runtime_error when LCM
+/// fails.
 void output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j);
 
 /// The impulses as JSON (t_s, dv_rsw_mps, dv_eci_mps or null).

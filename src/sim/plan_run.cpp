@@ -10,6 +10,7 @@
 
 #include "evade/guidance/plan_executor.hpp"
 #include "evade/sim/actuator_model.hpp"
+#include "evade/sim/sim_config.hpp"
 
 namespace evade::sim {
 namespace {
@@ -138,10 +139,12 @@ class PlanLoop {
 
 class PlanEndpoint final : public GuidanceEndpoint {
  public:
-  PlanEndpoint(const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_us)
+  PlanEndpoint(const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_us,
+               guidance::PlanFrame frame)
       : law_(cfg), exec_(guidance::PlanExecutorConfig::from(cfg)) {
     up_.plan = plan;
     up_.epoch_utime_us = epoch_us;
+    up_.frame = frame;
   }
   guidance::ThrustCommand exchange(std::int64_t utime_us, const guidance::NavState& nav,
                                    const guidance::AnglesMeasurement* meas) override {
@@ -200,8 +203,40 @@ void propagate_unforced(const PlanRunConfig& cfg, double t_s, StateEci* satellit
 }
 
 std::unique_ptr<GuidanceEndpoint> make_in_process_plan_endpoint(
-    const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_utime_us) {
-  return std::make_unique<PlanEndpoint>(cfg, plan, epoch_utime_us);
+    const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_utime_us,
+    guidance::PlanFrame frame) {
+  return std::make_unique<PlanEndpoint>(cfg, plan, epoch_utime_us, frame);
+}
+
+PlanRunConfig plan_run_config(const SimConfig& sim, const BurnPlan& plan, double epoch_s,
+                              double after_s) {
+  if (plan.n_impulses < 1 || plan.n_impulses > BurnPlan::kMaxImpulses)
+    throw std::invalid_argument("plan run: the plan has " + std::to_string(plan.n_impulses) +
+                                " impulses, expected 1.." +
+                                std::to_string(BurnPlan::kMaxImpulses));
+  if (!std::isfinite(epoch_s) || epoch_s < 0.0)
+    throw std::invalid_argument("plan run: plan epoch " + std::to_string(epoch_s) +
+                                " s after the start must be finite and >= 0");
+  if (!std::isfinite(after_s) || after_s < 0.0)
+    throw std::invalid_argument("plan run: " + std::to_string(after_s) +
+                                " s after the last burn must be finite and >= 0");
+  PlanRunConfig cfg;
+  cfg.satellite0 = sim.satellite0;
+  cfg.other0 = sim.debris0;
+  cfg.gravity = sim.gravity;
+  cfg.earth = sim.earth;
+  cfg.rate_hz = sim.guidance.rate_hz;
+  cfg.actuator = sim.actuator;
+  cfg.integrator = sim.integrator;
+  const ImpulsiveBurn& last = plan.impulses[static_cast<std::size_t>(plan.n_impulses - 1)];
+  const double cycle_s = sim.guidance.cycle_s();
+  const double burn_s =
+      std::ceil(last.dv_rsw_mps.norm() / (sim.guidance.max_accel_mps2 * cycle_s)) * cycle_s;
+  cfg.duration_s = epoch_s + last.t_s + burn_s + 2.0 * cycle_s + 1.0 + after_s;
+  if (!(cfg.duration_s > 0.0 && cfg.duration_s <= 1e7))
+    throw std::invalid_argument("plan run: the run would last " + std::to_string(cfg.duration_s) +
+                                " s (plan epoch + last burn + after), outside (0, 1e7] s");
+  return cfg;
 }
 
 }  // namespace evade::sim

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "evade/core/burn_plan.hpp"
+#include "evade/guidance/plan_executor.hpp"
 #include "evade/dynamics/dop853.hpp"
 #include "evade/dynamics/gravity.hpp"
 #include "evade/sim/guidance_endpoint.hpp"
@@ -73,8 +74,20 @@ void propagate_unforced(const PlanRunConfig& cfg, double t_s, StateEci* satellit
                         StateEci* other);
 
 /// In-process guidance with a plan: the paper-000 law (armed) plus the plan executor, the
-/// plan loaded at the first exchange with its epoch at epoch_utime_us and frame RSW.
+/// plan loaded at the first exchange with its epoch at epoch_utime_us and the given frame.
+/// exchange throws std::invalid_argument naming the executor's reason if it rejects the plan.
 std::unique_ptr<GuidanceEndpoint> make_in_process_plan_endpoint(
-    const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_utime_us);
+    const guidance::GuidanceConfig& cfg, const BurnPlan& plan, std::int64_t epoch_utime_us,
+    guidance::PlanFrame frame = guidance::PlanFrame::kRsw);
+
+/// A plan run on a simulation scenario's objects (`evade sim --plan`): the own satellite and
+/// the other object at the scenario's epoch, its gravity, Earth, actuator, integrator and
+/// guidance rate; the plan's t = 0 is epoch_s after the run starts; the run lasts until one
+/// second after the last burn can have ended (its planned time plus the burn at the thrust
+/// limit max_accel_mps2, rounded up to whole cycles, plus two cycles), plus after_s.
+/// Throws std::invalid_argument for a plan without impulses, epoch_s or after_s not finite
+/// and >= 0, or a run longer than the simulator's 1e7 s.
+PlanRunConfig plan_run_config(const SimConfig& sim, const BurnPlan& plan, double epoch_s,
+                              double after_s);
 
 }  // namespace evade::sim
