@@ -6,7 +6,8 @@
 //                    under `mpirun -np N` the grid steps are split between the ranks
 //                    (distributed::screen_distributed) and rank 0 prints the merged events.
 // Objects come from the scenario's `objects` list, a CSV file (--objects) or a seeded
-// synthetic LEO population (--population N --seed S). --json prints the result on stdout;
+// synthetic LEO population (--population N --seed S); with --tle or --omm a catalog moving by
+// SGP4 is screened instead (cmd_screen_catalog.cpp). --json prints the result on stdout;
 // progress of long screens goes to stderr. The scenario is read by
 // conjunction::read_screen_scenario; I/O lives here; the screening library is pure.
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "cmd_screen_catalog.hpp"
 #include "evade/conjunction/catalog.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/population.hpp"
@@ -46,6 +48,7 @@ struct Options {
   long seed = 1;
   int threads = 0;  // 0: hardware concurrency
   bool quiet = false;
+  CatalogScreenOptions catalog;  ///< --tle/--omm path
 };
 
 std::string utc_of(double epoch_j2000_s, double t_s) {
@@ -196,7 +199,20 @@ void print_text(const Options& o, const ScreenScenario& in, const std::vector<Sp
   }
 }
 
+int run_catalog(const Options& o) {
+  if (!o.common.sets.empty()) throw std::invalid_argument("--set applies to the scenario, not to --tle/--omm");
+  if (o.population > 0 || !o.objects_csv.empty())
+    throw std::invalid_argument("--tle/--omm: not with --population or --objects");
+  if (o.method != "robust") throw std::invalid_argument("--tle/--omm: only with --method robust");
+  CatalogScreenOptions c = o.catalog;
+  c.threads = o.threads;
+  c.json = o.common.json;
+  c.quiet = o.quiet;
+  return run_screen_catalog(c);
+}
+
 int run(const Options& o) {
+  if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) return run_catalog(o);
   const config::Scenario sc = load_scenario(o.common);
   const ScreenScenario in = read_screen_scenario(sc);
   const Objects ob = load_objects(o, sc, in);
@@ -246,6 +262,16 @@ const bool kRegistered = register_command(
       app.add_option("--threads", o->threads, "worker threads (default: all cores)")
           ->check(CLI::Range(1, 256));
       app.add_flag("--quiet", o->quiet, "no progress on stderr");
+      CatalogScreenOptions& c = o->catalog;
+      auto* tle = app.add_option("--tle", c.tle_path, "TLE/3LE file: screen the catalog with SGP4 motion");
+      auto* omm = app.add_option("--omm", c.omm_path, "CCSDS OMM (KVN or XML) or GP JSON/CSV file, as --tle");
+      tle->excludes(omm);
+      app.add_option("--primary", c.primary_norad, "with --tle/--omm: screen this NORAD id against the catalog");
+      app.add_option("--span-s", c.span_s, "with --tle/--omm: span from the start (s)")->capture_default_str();
+      app.add_option("--threshold-m", c.threshold_m, "with --tle/--omm: report misses <= D (m)")
+          ->capture_default_str();
+      app.add_option("--step-s", c.step_s, "with --tle/--omm: grid step (s; 0 = automatic)");
+      app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
       return [o]() { return run(*o); };
     });
 

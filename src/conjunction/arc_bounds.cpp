@@ -44,22 +44,25 @@ double gravity_hessian_bound(double r_m, GravityModel model, const EarthModel& e
 }
 
 ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityModel model,
-                     const EarthModel& earth) {
+                     const EarthModel& earth, double perturbation_mps2) {
+  // |r''| <= G(r) + perturbation at radius >= r.
+  auto g_bound = [&](double r_m) { return gravity_bound_mps2(r_m, model, earth) + perturbation_mps2; };
   // Lemma, first part: the tangent segment keeps the arc above rho_star.
   const double d_tan = segment_distance_m(a.r_eci_m, a.r_eci_m + h_s * a.v_eci_mps);
   const double rho0 = 0.5 * d_tan;
-  const double rho_star = d_tan - gravity_bound_mps2(rho0, model, earth) * h_s * h_s / 2.0;
+  const double rho_star = d_tan - g_bound(rho0) * h_s * h_s / 2.0;
   if (!(rho_star > rho0)) {
     throw std::runtime_error("arc_bounds: grid step " + std::to_string(h_s) +
                              " s too long for the arc bound (tangent distance " +
                              std::to_string(d_tan) + " m)");
   }
   // Second part: |r''| <= G(rho_star), so the arc stays within G h^2/8 of its chord.
-  const double chord_dev = gravity_bound_mps2(rho_star, model, earth) * h_s * h_s / 8.0;
+  const double chord_dev = g_bound(rho_star) * h_s * h_s / 8.0;
   ArcBounds out;
   out.r_lo_m = std::max(rho_star, segment_distance_m(a.r_eci_m, b.r_eci_m) - chord_dev);
   out.r_hi_m = std::max(a.r_eci_m.norm(), b.r_eci_m.norm()) + chord_dev;
-  out.g_max_mps2 = gravity_bound_mps2(out.r_lo_m, model, earth);
+  out.g_max_mps2 = g_bound(out.r_lo_m);
+  out.perturbation_mps2 = perturbation_mps2;
   // |v(t)| <= min(|v_a| + g (t - t_a), |v_b| + g (t_b - t)) <= (|v_a| + |v_b| + g h) / 2.
   out.v_max_mps = 0.5 * (a.v_eci_mps.norm() + b.v_eci_mps.norm() + out.g_max_mps2 * h_s);
   return out;

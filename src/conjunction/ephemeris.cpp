@@ -2,6 +2,7 @@
 #include "evade/conjunction/ephemeris.hpp"
 
 #include <stdexcept>
+#include <utility>
 #include <string>
 
 #include "evade/dynamics/orbit_propagator.hpp"
@@ -9,10 +10,13 @@
 namespace evade::conjunction {
 
 Ephemeris::Ephemeris(const std::vector<SpaceObject>& objects, GravityModel gravity,
-                     const EarthModel& earth, const AdaptiveOptions& integ)
-    : n_(objects.size()), gravity_(gravity), earth_(earth), integ_(integ) {
+                     const EarthModel& earth, const AdaptiveOptions& integ,
+                     std::shared_ptr<const MotionSource> motion)
+    : n_(objects.size()), gravity_(gravity), earth_(earth), integ_(integ), motion_(std::move(motion)) {
   integ_.validate();
-  if (gravity_ == GravityModel::kTwoBody) {
+  if (motion_) {
+    if (motion_->size() != n_) throw std::invalid_argument("Ephemeris: motion source size != objects");
+  } else if (gravity_ == GravityModel::kTwoBody) {
     kepler_.reserve(n_);
     for (const auto& o : objects) kepler_.emplace_back(o.state, earth_.mu_m3ps2);
   } else {
@@ -31,6 +35,10 @@ Ephemeris::~Ephemeris() = default;
 
 void Ephemeris::states_at(double t_s, std::vector<StateEci>& out) {
   out.resize(n_);
+  if (motion_) {
+    for (std::size_t i = 0; i < n_; ++i) out[i] = motion_->state_at(i, t_s);
+    return;
+  }
   if (gravity_ == GravityModel::kTwoBody) {
     for (std::size_t i = 0; i < n_; ++i) out[i] = kepler_[i].state_at(t_s);
     return;
@@ -52,6 +60,7 @@ void Ephemeris::states_at(double t_s, std::vector<StateEci>& out) {
 
 StateEci Ephemeris::state_near(std::size_t i, double t_s, const StateEci& s_grid,
                                double t_grid) const {
+  if (motion_) return t_s == t_grid ? s_grid : motion_->state_at(i, t_s);
   if (gravity_ == GravityModel::kTwoBody) return kepler_[i].state_at(t_s);
   if (t_s == t_grid) return s_grid;
   if (t_s < t_grid) throw std::logic_error("Ephemeris::state_near: time before the grid time");

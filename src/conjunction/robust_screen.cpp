@@ -74,6 +74,8 @@ struct NarrowPair {
   double v_obj = 0.0;    // larger bound on the two objects' speeds
   double d_ij = 0.0;     // reporting distance of the pair
   double rc = 0.0;       // collision radius R_c (eq. 1)
+  double p_sum = 0.0;    // eps_i + eps_j: motion's departure from the field (0 without)
+  double p_rate_sum = 0.0;  // bound on the rate of that departure
 };
 
 NarrowPair narrow_pair(std::size_t i, std::size_t j, double d_ij, const PairContext& ctx) {
@@ -87,6 +89,8 @@ NarrowPair narrow_pair(std::size_t i, std::size_t j, double d_ij, const PairCont
   p.v_obj = std::max(bi.v_max_mps, bj.v_max_mps);
   p.d_ij = d_ij;
   p.rc = collision_radius_m((*ctx.objects)[i], (*ctx.objects)[j]);
+  p.p_sum = bi.perturbation_mps2 + bj.perturbation_mps2;
+  p.p_rate_sum = bi.perturbation_rate_mps3 + bj.perturbation_rate_mps3;
   return p;
 }
 
@@ -134,7 +138,7 @@ IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const N
   g.r_seg = p.r_min - g.r_max;
   if (g.r_seg > 0.0) {
     const double k_grad = gravity_gradient_bound_ps2(g.r_seg, opt.gravity, opt.earth);
-    g.acc = std::min(g.acc, k_grad * g.r_max);
+    g.acc = std::min(g.acc, k_grad * g.r_max + p.p_sum);
   }
   return g;
 }
@@ -165,11 +169,13 @@ Monotonicity range_rate_monotonicity(const Endpoint& a, const Endpoint& b,
   const double k_grad = gravity_gradient_bound_ps2(r_seg, opt.gravity, opt.earth);
   const double v_obj = p.v_obj;
   const double v_rel_max = std::min(g.vel_a.norm(), g.vel_b.norm()) + acc * len;
-  const double b_f2 = 3.0 * v_rel_max * acc + r_max * (k_grad * v_rel_max + l_third * r_max * v_obj);
+  const double b_f2 = 3.0 * v_rel_max * acc +
+                      r_max * (k_grad * v_rel_max + l_third * r_max * v_obj + p.p_rate_sum);
   auto accel = [&](const Vec3& r) { return accel_eci_mps2(r, opt.gravity, opt.earth); };
   const double dfa = g.vel_a.squaredNorm() + g.rho_a.dot(accel(a.sj.r_eci_m) - accel(a.si.r_eci_m));
   const double dfb = g.vel_b.squaredNorm() + g.rho_b.dot(accel(b.sj.r_eci_m) - accel(b.si.r_eci_m));
-  const double slack = b_f2 * len;
+  // rho.rho'' is known to within |rho| (eps_i + eps_j) at each end (motion sources).
+  const double slack = b_f2 * len + (g.rho_a.norm() + g.rho_b.norm()) * p.p_sum;
   // On [a, b]: f'(t) >= max(f'(a) - B (t-a), f'(b) - B (b-t)) >= (f'(a) + f'(b) - B len)/2
   // and f'(t) <= (f'(a) + f'(b) + B len)/2.
   m.monotone = dfa + dfb - slack > 0.0;
@@ -336,8 +342,11 @@ struct Worker {
   void update_step_bounds(const std::vector<StateEci>& sa, const std::vector<StateEci>& sb,
                           double dt) {
     if (opt->gravity != GravityModel::kTwoBodyJ2) return;  // conic bounds, set once
-    for (std::size_t i = 0; i < sa.size(); ++i)
-      step_bounds[i] = arc_bounds(sa[i], sb[i], dt, opt->gravity, opt->earth);
+    for (std::size_t i = 0; i < sa.size(); ++i) {
+      const PerturbationBound pb = opt->motion ? opt->motion->perturbation(i) : PerturbationBound{};
+      step_bounds[i] = arc_bounds(sa[i], sb[i], dt, opt->gravity, opt->earth, pb.accel_mps2);
+      step_bounds[i].perturbation_rate_mps3 = pb.rate_mps3;
+    }
   }
 
   // Swept boxes of the step, padded by g h^2/8 + D/2; returns the grid cell size.
@@ -377,6 +386,7 @@ struct Worker {
           ++stats.pairs_checked;
           std::size_t i = entries[p].second, j = entries[q].second;
           if (i > j) std::swap(i, j);
+          if (!opt->screens_pair(i, j)) continue;
           if ((lo[i].array() > hi[j].array()).any() || (lo[j].array() > hi[i].array()).any())
             continue;
           const Vec3 corner = lo[i].cwiseMax(lo[j]);
@@ -396,14 +406,15 @@ struct Worker {
 
   void run() {
     const std::size_t n = objects->size();
-    Ephemeris eph(*objects, opt->gravity, opt->earth, opt->integ);
+    Ephemeris eph(*objects, opt->gravity, opt->earth, opt->integ, opt->motion);
     const double d_max = max_reporting_distance_m(*objects, *opt);
     step_bounds = conic_bounds(*bounds, opt->earth);
     lo.resize(n);
     hi.resize(n);
     entries.reserve(8 * n);
     std::vector<StateEci> sa, sb;
-    const long k_first = opt->gravity == GravityModel::kTwoBodyJ2 ? 0 : k_begin;
+    const bool replay = opt->gravity == GravityModel::kTwoBodyJ2 && !opt->motion;  // DOP853 steps
+    const long k_first = replay ? 0 : k_begin;
     for (long k = k_first; k <= k_begin; ++k) eph.states_at(grid_time(k), sa);
     double t_a = grid_time(k_begin);
     const long progress_every = std::max(1L, (k_end - k_begin) / 100);
@@ -450,6 +461,16 @@ void ScreenOptions::validate() const {
     fail("warning_multiple", warning_multiple, "(1, inf)");
   if (!(tca_tol_s > 0.0) || !std::isfinite(tca_tol_s)) fail("tca_tol_s", tca_tol_s, "(0, inf)");
   if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
+  if (primary < -1) fail("primary", static_cast<double>(primary), "[-1, objects)");
+  if (motion) {
+    const EarthModel m = motion->reference_earth();
+    if (gravity != GravityModel::kTwoBodyJ2 || m.mu_m3ps2 != earth.mu_m3ps2 || m.re_m != earth.re_m ||
+        m.j2 != earth.j2) {
+      throw std::invalid_argument(
+          "screen.motion: the motion's perturbation bound is measured against two-body + J2 with "
+          "its reference Earth model: set gravity = two_body_j2 and earth = reference_earth()");
+    }
+  }
   const std::string bad_earth = validate_params(earth_params(), earth, "earth.");
   if (!bad_earth.empty()) throw std::invalid_argument(bad_earth);
   integ.validate();
@@ -502,6 +523,32 @@ void run_workers(std::vector<Worker>& workers) {
 
 }  // namespace
 
+namespace {
+
+void check_motion_and_primary(const std::vector<SpaceObject>& objects, const ScreenOptions& opt) {
+  if (opt.motion && opt.motion->size() != objects.size()) {
+    throw std::invalid_argument("screen.motion: " + std::to_string(opt.motion->size()) +
+                                " moving objects for " + std::to_string(objects.size()) + " objects");
+  }
+  if (opt.primary >= static_cast<long>(objects.size())) {
+    throw std::invalid_argument("screen.primary = " + std::to_string(opt.primary) + " outside [-1, " +
+                                std::to_string(objects.size()) + ")");
+  }
+}
+
+// Statistic: with a primary, the objects whose radius range comes within d_max of its own.
+long count_primary_pairs(const std::vector<ObjectBounds>& bounds, long primary, double d_max) {
+  const ObjectBounds& p = bounds[static_cast<std::size_t>(primary)];
+  long count = 0;
+  for (std::size_t k = 0; k < bounds.size(); ++k) {
+    if (static_cast<long>(k) == primary) continue;
+    if (std::max(p.r_min_m, bounds[k].r_min_m) - std::min(p.r_max_m, bounds[k].r_max_m) <= d_max) ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
 long screen_grid_steps(double span_s, const ScreenOptions& opt, std::size_t n_objects) {
   const double step = opt.step_s == 0.0 ? auto_step_s(n_objects) : opt.step_s;
   return static_cast<long>(std::ceil(span_s / step - 1e-12));
@@ -520,11 +567,14 @@ ScreenResult screen_robust_part(const std::vector<SpaceObject>& objects, double 
                                 std::to_string(parts) + " outside [0, parts)");
   }
   validate_objects(objects, opt.earth);
+  check_motion_and_primary(objects, opt);
   ScreenResult res;
   const std::vector<ObjectBounds> bounds = object_bounds(objects, opt);
   if (part == 0) {
-    res.stats.pairs_after_apogee_perigee =
-        count_apogee_perigee_pairs(bounds, max_reporting_distance_m(objects, opt));
+    const double d_max = max_reporting_distance_m(objects, opt);
+    res.stats.pairs_after_apogee_perigee = opt.primary >= 0
+                                               ? count_primary_pairs(bounds, opt.primary, d_max)
+                                               : count_apogee_perigee_pairs(bounds, d_max);
   }
   if (objects.size() < 2) return res;
   const long nsteps = screen_grid_steps(span_s, opt, objects.size());
@@ -571,7 +621,8 @@ ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double 
   ScreenResult res;
   const std::size_t n = objects.size();
   if (n < 2) return res;
-  Ephemeris eph(objects, opt.gravity, opt.earth, opt.integ);
+  check_motion_and_primary(objects, opt);
+  Ephemeris eph(objects, opt.gravity, opt.earth, opt.integ, opt.motion);
   const long nsteps = static_cast<long>(std::ceil(span_s / sample_step_s - 1e-12));
   std::vector<StateEci> prev, cur;
   std::vector<double> f_prev(n * n, 0.0);
@@ -585,6 +636,7 @@ ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double 
     ++res.stats.steps;
     for (std::size_t i = 0; i < n; ++i) {
       for (std::size_t j = i + 1; j < n; ++j) {
+        if (!opt.screens_pair(i, j)) continue;
         ++res.stats.pairs_checked;
         const double fc = range_rate_product(cur[i], cur[j]);
         double& fp = f_prev[i * n + j];

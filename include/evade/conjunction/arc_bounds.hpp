@@ -35,11 +35,15 @@ struct ArcBounds {
   double r_hi_m = 0.0;      ///< |r(t)| <= r_hi_m on the arc
   double g_max_mps2 = 0.0;  ///< |r''(t)| <= g_max_mps2 on the arc
   double v_max_mps = 0.0;   ///< |r'(t)| <= v_max_mps on the arc
+  double perturbation_mps2 = 0.0;       ///< |r'' - a(r)| <= this (0 for the field's motion)
+  double perturbation_rate_mps3 = 0.0;  ///< |d/dt (r'' - a(r))| <= this
 };
 
 /// Bounds on the arc from state a (at t) to state b (at t + h_s). Throws std::runtime_error
-/// when the lemma's condition fails (a step far too long for the orbit).
+/// when the lemma's condition fails (a step far too long for the orbit). perturbation_mps2:
+/// a bound on |r'' - a(r)| of a motion that is not exactly the field's (SGP4 motion,
+/// motion_source.hpp); the lemma then holds with G(r) + perturbation_mps2 in place of G(r).
 ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityModel model,
-                     const EarthModel& earth);
+                     const EarthModel& earth, double perturbation_mps2 = 0.0);
 
 }  // namespace evade::conjunction

@@ -7,6 +7,8 @@
 // 7th-order dense output (HNW I sec. II.6). The arc of an object is integrated once per grid
 // step and shared by all its pairs; it does not depend on which times were asked first, so
 // results do not depend on the order of the pairs. Grid times must not decrease.
+// A MotionSource (motion_source.hpp; e.g. SGP4), when given, replaces both: every state
+// comes from it.
 #pragma once
 
 #include <cstddef>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "evade/dynamics/kepler_propagator.hpp"
+#include "evade/conjunction/motion_source.hpp"
 #include "evade/conjunction/types.hpp"
 #include "evade/dynamics/dop853.hpp"
 #include "evade/dynamics/gravity.hpp"
@@ -24,7 +27,8 @@ class Ephemeris {
  public:
   /// Objects must have passed validate_objects().
   Ephemeris(const std::vector<SpaceObject>& objects, GravityModel gravity, const EarthModel& earth,
-            const AdaptiveOptions& integ = AdaptiveOptions::tight());
+            const AdaptiveOptions& integ = AdaptiveOptions::tight(),
+            std::shared_ptr<const MotionSource> motion = nullptr);
   ~Ephemeris();
   Ephemeris(const Ephemeris&) = delete;
   Ephemeris& operator=(const Ephemeris&) = delete;
@@ -43,6 +47,7 @@ class Ephemeris {
   GravityModel gravity_;
   EarthModel earth_;
   AdaptiveOptions integ_;
+  std::shared_ptr<const MotionSource> motion_;
   std::vector<KeplerOrbit> kepler_;
   std::vector<std::unique_ptr<Dop853<Vec6>>> numeric_;
   // J2: the arcs of the current grid time t_grid (the integrator after each of its steps),

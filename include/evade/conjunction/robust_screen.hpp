@@ -24,14 +24,20 @@
 //   test is applied on each leaf (counted as unproven_leaves; docs/VALIDATION.md).
 // Under two-body + J2 the radius range, g, K, L and the speed bound of every object come per
 // grid step from the arc lemma of arc_bounds.hpp (proved in docs/VALIDATION.md).
+// With a MotionSource (ScreenOptions::motion, e.g. SGP4) the objects move by it; its bound
+// eps_i on |r_i'' - a(r_i)| (a = two-body + J2) enters the arc lemma as G + eps_i, A as
+// K R_max + eps_i + eps_j, and the f'' bound with the rates (docs/VALIDATION.md, "Robust
+// mode with SGP4 motion"). ScreenOptions::primary limits the pairs to those of one object.
 // The steps are split between threads (std::thread), and between processes by
 // screen_robust_part; events are merged and sorted. Results do not depend on the split.
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <vector>
 
+#include "evade/conjunction/motion_source.hpp"
 #include "evade/conjunction/types.hpp"
 #include "evade/core/param.hpp"
 #include "evade/dynamics/dop853.hpp"
@@ -50,6 +56,15 @@ struct ScreenOptions {
   GravityModel gravity = GravityModel::kTwoBody;
   EarthModel earth = kEarthDefault;
   AdaptiveOptions integ = AdaptiveOptions::tight();  ///< J2 path only
+  /// Objects move by this source instead of the force model (size = number of objects);
+  /// then gravity must be kTwoBodyJ2 and earth the source's reference_earth().
+  std::shared_ptr<const MotionSource> motion;
+  /// Index of the one object whose pairs are screened (-1: all pairs).
+  long primary = -1;
+  /// True when the pair (i, j) is screened (every pair, or only those of the primary).
+  bool screens_pair(std::size_t i, std::size_t j) const {
+    return primary < 0 || static_cast<long>(i) == primary || static_cast<long>(j) == primary;
+  }
   /// Called from the first worker with its fraction done in [0, 1] (may be empty).
   std::function<void(double)> progress;
   /// Throws std::invalid_argument naming the option, value and allowed range (the table's

@@ -1,0 +1,28 @@
+// `evade screen --tle FILE | --omm FILE`: the catalog path of `evade screen` (cmd_screen.cpp
+// registers the flags and hands over here): every object moves by SGP4.
+#pragma once
+
+#include <string>
+
+namespace evade::cli {
+
+struct CatalogScreenOptions {
+  std::string tle_path;      ///< --tle: TLE or 3LE text
+  std::string omm_path;      ///< --omm: OMM KVN/XML or GP JSON/CSV (detected from the text)
+  long primary_norad = -1;   ///< --primary: screen this object against the catalog
+  double span_s = 86400.0;   ///< --span-s
+  double threshold_m = 5000.0;  ///< --threshold-m
+  double step_s = 0.0;       ///< --step-s (0: auto_step_s(N))
+  std::string start_utc;     ///< --start (empty: the latest element epoch)
+  int threads = 0;           ///< 0: hardware concurrency
+  bool json = false;
+  bool quiet = false;
+};
+
+/// Reads the catalog, screens it with SGP4 motion and prints the events. Exit 0 when at
+/// least one pair could be screened (bad entries and rejected element sets are listed on
+/// stderr and in the JSON); std::invalid_argument (exit 2) for bad flags, an unknown
+/// --primary or a file with no usable element set.
+int run_screen_catalog(const CatalogScreenOptions& o);
+
+}  // namespace evade::cli

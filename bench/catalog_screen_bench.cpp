@@ -1,0 +1,98 @@
+// Screening a catalog with SGP4 motion (issue 12): the shipped 1,200-element-set catalog
+// scenarios/catalogs/synthetic-1200.tle (generated to look like a public catalog:
+// scenarios/catalogs/README.md), 5 km, from the latest element epoch.
+//   BM_Sgp4CatalogSetup  : reading the file and sgp4_screening (SGP4 initialisation and the
+//                          perturbation envelope of every object) for a span of range(0) h;
+//   BM_Sgp4CatalogScreen : the all-pairs robust screening; args: span [h], threads;
+//   BM_Sgp4CatalogPrimary: one object (NORAD 90000) against the catalog; args: span [h].
+// Run from the repository root (the catalog path is relative to it; EVADE_CATALOG overrides):
+//   build/bench/catalog_screen_bench --benchmark_filter=Sgp4Catalog
+// Results and machine: docs/PERFORMANCE.md.
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "evade/conjunction/robust_screen.hpp"
+#include "evade/conjunction/sgp4_motion.hpp"
+#include "evade/sgp4/tle_reader.hpp"
+
+namespace {
+
+using namespace evade;
+using namespace evade::conjunction;
+
+bool read_catalog(benchmark::State& state, sgp4::Catalog& cat) {
+  const char* env = std::getenv("EVADE_CATALOG");
+  const std::string path = env ? env : "scenarios/catalogs/synthetic-1200.tle";
+  std::ifstream in(path);
+  if (!in) {
+    state.SkipWithError(("cannot open " + path + " (run from the repository root)").c_str());
+    return false;
+  }
+  std::ostringstream os;
+  os << in.rdbuf();
+  cat = sgp4::read_tle(os.str(), path);
+  return true;
+}
+
+void BM_Sgp4CatalogSetup(benchmark::State& state) {
+  sgp4::Catalog cat;
+  if (!read_catalog(state, cat)) return;
+  Sgp4MotionOptions mo;
+  mo.span_s = 3600.0 * static_cast<double>(state.range(0));
+  Sgp4Screening s;
+  for (auto _ : state) {
+    s = sgp4_screening(cat.objects, mo);
+    benchmark::DoNotOptimize(s.objects.data());
+  }
+  state.counters["objects"] = static_cast<double>(s.objects.size());
+  state.counters["rejected"] = static_cast<double>(s.rejected.size());
+}
+BENCHMARK(BM_Sgp4CatalogSetup)->Arg(24)->Arg(168)->MeasureProcessCPUTime()->UseRealTime()
+    ->Unit(benchmark::kSecond)->Iterations(1);
+
+void screen(benchmark::State& state, double span_s, int threads, long primary_norad) {
+  sgp4::Catalog cat;
+  if (!read_catalog(state, cat)) return;
+  Sgp4MotionOptions mo;
+  mo.span_s = span_s;
+  const Sgp4Screening s = sgp4_screening(cat.objects, mo);
+  ScreenOptions opt;
+  opt.motion = s.motion;
+  opt.gravity = GravityModel::kTwoBodyJ2;
+  opt.earth = wgs72_earth();
+  opt.threshold_m = 5000.0;
+  opt.include_warning_radius = false;
+  opt.threads = threads;
+  for (std::size_t k = 0; k < s.norad_ids.size(); ++k)
+    if (s.norad_ids[k] == primary_norad) opt.primary = static_cast<long>(k);
+  ScreenResult r;
+  for (auto _ : state) {
+    r = screen_robust(s.objects, span_s, opt);
+    benchmark::DoNotOptimize(r.events.data());
+  }
+  state.counters["objects"] = static_cast<double>(s.objects.size());
+  state.counters["events"] = static_cast<double>(r.events.size());
+  state.counters["candidates"] = static_cast<double>(r.stats.candidates);
+  state.counters["grid_steps"] = static_cast<double>(r.stats.steps);
+  state.counters["unproven_leaves"] = static_cast<double>(r.stats.unproven_leaves);
+}
+
+void BM_Sgp4CatalogScreen(benchmark::State& state) {
+  screen(state, 3600.0 * static_cast<double>(state.range(0)), static_cast<int>(state.range(1)), -1);
+}
+BENCHMARK(BM_Sgp4CatalogScreen)->Args({24, 1})->Args({24, 2})->Args({168, 2})
+    ->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_Sgp4CatalogPrimary(benchmark::State& state) {
+  screen(state, 3600.0 * static_cast<double>(state.range(0)), 1, 90000);
+}
+BENCHMARK(BM_Sgp4CatalogPrimary)->Arg(24)->Arg(168)->MeasureProcessCPUTime()->UseRealTime()
+    ->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

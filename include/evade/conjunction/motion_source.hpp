@@ -1,0 +1,44 @@
+// Objects whose motion is given as a function of time rather than by a force model (issue
+// 12: a catalog moving by SGP4), for the robust screener and the reference screener.
+//
+// The screener's no-miss theorem (docs/VALIDATION.md, "Robust mode with SGP4 motion") needs,
+// besides the states, a bound on how far the motion's acceleration departs from the
+// two-body + J2 field a(r) of the screener's Earth model: for object i and every t of the
+// screened span, with p_i(t) = r_i''(t) - a(r_i(t)),
+//   |p_i(t)| <= accel_mps2   and   |p_i'(t)| <= rate_mps3.
+// The velocity a source returns must be the time derivative of the position it returns
+// (the screener's range rate is rho . rho'), not some other velocity.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "evade/core/constants.hpp"
+#include "evade/core/state.hpp"
+
+namespace evade::conjunction {
+
+/// Bounds on the perturbation p(t) = r''(t) - a(r(t)) of one object over the span.
+struct PerturbationBound {
+  double accel_mps2 = 0.0;  ///< |p(t)| <= accel_mps2
+  double rate_mps3 = 0.0;   ///< |p'(t)| <= rate_mps3
+};
+
+class MotionSource {
+ public:
+  virtual ~MotionSource() = default;
+  /// Number of objects (the screener's objects, in the same order).
+  virtual std::size_t size() const = 0;
+  /// Position and velocity (= d position / dt) of object i at t_s seconds from the
+  /// screening start. Thread-safe. Throws std::runtime_error naming the object when the
+  /// motion is undefined there (e.g. an SGP4 error).
+  virtual StateEci state_at(std::size_t i, double t_s) const = 0;
+  /// The bound on the departure from two-body + J2 of reference_earth() over the span.
+  virtual PerturbationBound perturbation(std::size_t i) const = 0;
+  /// The Earth model the perturbation is measured against; the screener must use it.
+  virtual EarthModel reference_earth() const = 0;
+  /// The frame of the states ("TEME", "J2000"), for reports.
+  virtual std::string frame() const = 0;
+};
+
+}  // namespace evade::conjunction

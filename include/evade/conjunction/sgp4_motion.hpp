@@ -1,0 +1,113 @@
+// A catalog of SGP4 element sets as screening objects (issue 12): each object moves by
+// SGP4/SDP4 (Vallado, Crawford, Hujsak & Kelso 2006, AIAA 2006-6753; evade/sgp4) in TEME,
+// from a common start (by default the latest element epoch of the catalog).
+//
+// Frame: the states are TEME coordinates as SGP4 returns them. Distances between objects at
+// one instant do not depend on the frame (TEME and J2000 differ by a rotation), so the
+// conjunctions (pairs, TCA, miss, relative speed) are the same in either; the slow rotation
+// of TEME of date against J2000 (precession and nutation, ~1e-11 rad/s) is part of the
+// perturbation the bound below covers.
+//
+// Velocity: SGP4's own velocity is not the time derivative of its position (they differ by
+// 1-10 cm/s in LEO, from the truncated short-period terms), so the velocity returned here is
+// the central difference (r(t + tau) - r(t - tau)) / (2 tau), tau = velocity_step_s. Its
+// error is tau^2 |r'''| / 6 (4e-6 m/s in LEO at tau = 0.05 s) plus the position's own
+// non-smoothness over 2 tau: SGP4 stops Newton's iteration on Kepler's equation when the
+// correction is below 1e-12 rad and keeps the sine and cosine of the previous iterate, so
+// the position jumps by up to ~1e-12 a (7 um in LEO) where the iteration count changes,
+// i.e. up to 7e-5 m/s in this velocity.
+//
+// Perturbation bound (MotionSource): p(t) = r''(t) - a(r(t)), a = two-body + J2 with SGP4's
+// WGS-72 constants, is the SGP4 motion's departure from that field (J3, J4, drag, the
+// truncation of SGP4's short-period terms, lunar-solar terms in deep space). It is sampled
+// once per object over the span (five-point second difference of the SGP4 positions, step
+// accel_step_s = 5 s, so that the 7 um jumps above add at most 1.5e-6 m/s^2)
+// at samples_per_orbit samples per orbit, compressed by (1 - e)^1.5 for eccentric orbits;
+// accel_mps2 = envelope_factor x the largest sample + floor, and rate_mps3 = 4 n_max x
+// accel_mps2 with n_max the largest angular rate of the orbit, n (1 + e)^2 / (1 - e^2)^1.5.
+// This envelope is derived, not proven: docs/VALIDATION.md states it as the theorem's
+// assumption and how it is checked.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "evade/conjunction/motion_source.hpp"
+#include "evade/conjunction/types.hpp"
+#include "evade/sgp4/mean_elements.hpp"
+#include "evade/sgp4/sgp4.hpp"
+
+namespace evade::conjunction {
+
+struct Sgp4MotionOptions {
+  double span_s = 86400.0;        ///< screened span from the start [s]
+  bool start_at_latest_epoch = true;
+  double start_j2000_s = 0.0;     ///< start (UTC s since J2000) when not the latest epoch
+  sgp4::OperationMode mode = sgp4::OperationMode::kImproved;
+  double velocity_step_s = 0.05;  ///< tau of the velocity's central difference [s]
+  double accel_step_s = 5.0;      ///< step h of the acceleration's 5-point difference [s]
+  int samples_per_orbit = 64;     ///< perturbation envelope samples (times (1 - e)^-1.5)
+  long max_samples = 20000;       ///< cap per object (spread over the span)
+  double envelope_factor = 2.0;   ///< accel_mps2 = factor x largest sample + floor
+  double envelope_floor_mps2 = 5e-6;
+  double object_size_m = 0.0;     ///< SpaceObject::size_m given to every object
+  /// Throws std::invalid_argument naming the field.
+  void validate() const;
+
+ private:
+  void validate_steps() const;
+};
+
+/// An element set left out of the screening, and why.
+struct RejectedElementSet {
+  long norad_id = 0;
+  std::string name;
+  std::string reason;  ///< e.g. "SGP4 error 6 (decayed) at t = 5400 s"
+  /// "NORAD 12345 (NAME): REASON".
+  std::string message() const;
+};
+
+/// The SGP4 motion of the accepted element sets (MotionSource for the screeners).
+class Sgp4Motion : public MotionSource {
+ public:
+  std::size_t size() const override { return props_.size(); }
+  StateEci state_at(std::size_t i, double t_s) const override;
+  PerturbationBound perturbation(std::size_t i) const override { return bounds_[i]; }
+  EarthModel reference_earth() const override;
+  std::string frame() const override { return "TEME"; }
+
+  /// The largest sampled |p| of object i (before the factor and floor), for reports.
+  double sampled_perturbation_mps2(std::size_t i) const { return sampled_[i]; }
+
+ private:
+  friend struct Sgp4CatalogBuilder;
+  std::vector<sgp4::Sgp4Propagator> props_;
+  std::vector<double> offset_s_;  // start - element epoch [s]
+  std::vector<long> norad_;
+  std::vector<std::string> names_;
+  std::vector<PerturbationBound> bounds_;
+  std::vector<double> sampled_;
+  double velocity_step_s_ = 0.01;
+};
+
+/// A catalog ready to screen: objects (state at the start, name "NORAD NAME"), their motion,
+/// and what was rejected (SGP4 error at initialisation or at any envelope sample of the span,
+/// perigee below the Earth's radius).
+struct Sgp4Screening {
+  std::vector<SpaceObject> objects;
+  std::vector<long> norad_ids;
+  std::shared_ptr<const Sgp4Motion> motion;
+  std::vector<RejectedElementSet> rejected;
+  double start_j2000_s = 0.0;
+};
+
+/// Builds the screening of `elements` (the catalog's entries, in order).
+Sgp4Screening sgp4_screening(const std::vector<sgp4::MeanElements>& elements,
+                             const Sgp4MotionOptions& opt);
+
+/// WGS-72 (the constants SGP4 element sets are fitted with) as an EarthModel.
+EarthModel wgs72_earth();
+
+}  // namespace evade::conjunction

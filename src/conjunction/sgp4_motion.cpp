@@ -1,0 +1,235 @@
+// SGP4 motion of a catalog for the screeners (issue 12; see sgp4_motion.hpp). SGP4/SDP4:
+// Vallado, Crawford, Hujsak & Kelso (2006), AIAA 2006-6753 (evade/sgp4). Central and second
+// differences: e.g. Atkinson, An Introduction to Numerical Analysis, 2nd ed., sec. 5.7.
+// The perturbation envelope and what it assumes: docs/VALIDATION.md, "Robust mode with SGP4
+// motion".
+#include "evade/conjunction/sgp4_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "evade/dynamics/gravity.hpp"
+#include "evade/sgp4/gravity_constants.hpp"
+
+namespace evade::conjunction {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+std::string label(long norad, const std::string& name) {
+  return "NORAD " + std::to_string(norad) + (name.empty() ? "" : " (" + name + ")");
+}
+
+// Position at t_s seconds from the element epoch, or the SGP4 error text.
+struct Position {
+  bool ok = false;
+  Vec3 r;
+  std::string error;
+};
+
+Position position(const sgp4::Sgp4Propagator& p, double t_s) {
+  const sgp4::Sgp4State s = p.propagate_s(t_s);
+  Position out;
+  out.ok = s.error == sgp4::Sgp4Error::kNone;
+  out.r = s.r_teme_m;
+  if (!out.ok) {
+    out.error = "SGP4 error " + std::to_string(static_cast<int>(s.error)) + " (" +
+                sgp4::sgp4_error_text(s.error) + ")";
+  }
+  return out;
+}
+
+// Largest sampled |r'' - a(r)| of one object over [0, span] (t counted from the start), or
+// the first SGP4 error met (reason non-empty).
+struct Envelope {
+  double p_max_mps2 = 0.0;
+  std::string reason;
+};
+
+Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
+                         const sgp4::MeanElements& m, const Sgp4MotionOptions& opt,
+                         const EarthModel& earth) {
+  const double period_s = 86400.0 / m.mean_motion_revpday;
+  const double e = std::clamp(m.eccentricity, 0.0, 0.99);
+  double dt = period_s * std::pow(1.0 - e, 1.5) / opt.samples_per_orbit;
+  long n = static_cast<long>(std::ceil(opt.span_s / dt)) + 1;
+  if (n > opt.max_samples) {
+    n = opt.max_samples;
+    dt = opt.span_s / static_cast<double>(n - 1);
+  }
+  const double h = opt.accel_step_s;
+  Envelope env;
+  for (long k = 0; k < n; ++k) {
+    const double t = std::min(static_cast<double>(k) * dt, opt.span_s);
+    Position q[5];
+    for (int m = 0; m < 5; ++m) {
+      q[m] = position(p, offset_s + t + (m - 2) * h);
+      if (!q[m].ok) {
+        env.reason = q[m].error + " at t = " + fmt(t + (m - 2) * h) + " s from the start";
+        return env;
+      }
+    }
+    // Five-point second difference: truncation h^4 |r^(6)| / 90.
+    const Vec3 acc = (-q[0].r + 16.0 * q[1].r - 30.0 * q[2].r + 16.0 * q[3].r - q[4].r) / (12.0 * h * h);
+    const Vec3 pert = acc - accel_eci_mps2(q[2].r, GravityModel::kTwoBodyJ2, earth);
+    env.p_max_mps2 = std::max(env.p_max_mps2, pert.norm());
+  }
+  return env;
+}
+
+}  // namespace
+
+void Sgp4MotionOptions::validate() const {
+  auto fail = [](const char* key, double v, const char* range) {
+    std::ostringstream os;
+    os << "sgp4 motion: " << key << " = " << v << " outside " << range;
+    throw std::invalid_argument(os.str());
+  };
+  if (!(span_s > 0.0) || !std::isfinite(span_s)) fail("span_s", span_s, "(0, inf)");
+  if (!std::isfinite(start_j2000_s)) fail("start_j2000_s", start_j2000_s, "finite");
+  validate_steps();
+}
+
+void Sgp4MotionOptions::validate_steps() const {
+  auto fail = [](const char* key, double v, const char* range) {
+    std::ostringstream os;
+    os << "sgp4 motion: " << key << " = " << v << " outside " << range;
+    throw std::invalid_argument(os.str());
+  };
+  if (!(velocity_step_s > 0.0 && velocity_step_s <= 1.0))
+    fail("velocity_step_s", velocity_step_s, "(0, 1]");
+  if (!(accel_step_s > 0.0 && accel_step_s <= 10.0)) fail("accel_step_s", accel_step_s, "(0, 10]");
+  if (samples_per_orbit < 8 || samples_per_orbit > 100000)
+    fail("samples_per_orbit", samples_per_orbit, "[8, 100000]");
+  if (max_samples < 2) fail("max_samples", static_cast<double>(max_samples), "[2, inf)");
+  if (!(envelope_factor >= 1.0) || !std::isfinite(envelope_factor))
+    fail("envelope_factor", envelope_factor, "[1, inf)");
+  if (!(envelope_floor_mps2 >= 0.0) || !std::isfinite(envelope_floor_mps2))
+    fail("envelope_floor_mps2", envelope_floor_mps2, "[0, inf)");
+  if (!(object_size_m >= 0.0) || !std::isfinite(object_size_m))
+    fail("object_size_m", object_size_m, "[0, inf)");
+}
+
+std::string RejectedElementSet::message() const { return label(norad_id, name) + ": " + reason; }
+
+EarthModel wgs72_earth() {
+  const sgp4::GravityConstants k = sgp4::gravity_constants(sgp4::GravityModel::kWgs72);
+  EarthModel e;
+  e.mu_m3ps2 = k.mu_km3ps2 * 1e9;
+  e.re_m = k.radius_km * 1e3;
+  e.j2 = k.j2;
+  return e;
+}
+
+EarthModel Sgp4Motion::reference_earth() const { return wgs72_earth(); }
+
+StateEci Sgp4Motion::state_at(std::size_t i, double t_s) const {
+  const double t = offset_s_[i] + t_s, tau = velocity_step_s_;
+  const Position a = position(props_[i], t - tau), b = position(props_[i], t),
+                 c = position(props_[i], t + tau);
+  if (!a.ok || !b.ok || !c.ok) {
+    throw std::runtime_error("SGP4 motion: " + label(norad_[i], names_[i]) + ": " +
+                             (!b.ok ? b.error : !a.ok ? a.error : c.error) + " at t = " +
+                             fmt(t_s) + " s from the start");
+  }
+  return StateEci{b.r, (c.r - a.r) / (2.0 * tau)};
+}
+
+// Builds Sgp4Motion (a friend, so the motion's vectors stay private).
+struct Sgp4CatalogBuilder {
+  static Sgp4Screening build(const std::vector<sgp4::MeanElements>& elements,
+                             const Sgp4MotionOptions& opt);
+  static std::string accept(Sgp4Motion& mo, const sgp4::MeanElements& m, double start_s,
+                            const Sgp4MotionOptions& opt, SpaceObject& obj);
+};
+
+// Adds one element set to the motion, or returns why it is rejected.
+std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements& m,
+                                       double start_s, const Sgp4MotionOptions& opt,
+                                       SpaceObject& obj) {
+  const sgp4::Sgp4Propagator prop(m, opt.mode);
+  if (prop.init_error() != sgp4::Sgp4Error::kNone) {
+    return "SGP4 error " + std::to_string(static_cast<int>(prop.init_error())) + " (" +
+           sgp4::sgp4_error_text(prop.init_error()) + ") at the element epoch";
+  }
+  if (!(m.mean_motion_revpday > 0.0)) return "mean motion " + fmt(m.mean_motion_revpday) + " rev/day <= 0";
+  const EarthModel earth = wgs72_earth();
+  const double offset_s = start_s - sgp4::epoch_seconds_since_j2000(m);
+  const Envelope env = sample_envelope(prop, offset_s, m, opt, earth);
+  if (!env.reason.empty()) return env.reason;
+  mo.props_.push_back(prop);
+  mo.offset_s_.push_back(offset_s);
+  mo.norad_.push_back(m.norad_id);
+  mo.names_.push_back(m.name);
+  const std::size_t i = mo.props_.size() - 1;
+  obj.name = std::to_string(m.norad_id) + (m.name.empty() ? "" : " " + m.name);
+  obj.size_m = opt.object_size_m;
+  obj.state = mo.state_at(i, 0.0);
+  std::string bad;
+  try {
+    const OrbitShape shape = orbit_shape(obj.state, earth.mu_m3ps2);
+    if (shape.perigee_radius_m <= earth.re_m)
+      bad = "osculating perigee radius " + fmt(shape.perigee_radius_m) +
+            " m at the start is below the Earth radius";
+  } catch (const std::invalid_argument& ex) {
+    bad = std::string("osculating orbit at the start: ") + ex.what();
+  }
+  if (!bad.empty()) {
+    mo.props_.pop_back();
+    mo.offset_s_.pop_back();
+    mo.norad_.pop_back();
+    mo.names_.pop_back();
+    return bad;
+  }
+  const double e = std::min(m.eccentricity, 0.99);
+  const double n_radps = m.mean_motion_revpday * 2.0 * kPi / 86400.0;
+  const double n_max = n_radps * (1.0 + e) * (1.0 + e) / std::pow(1.0 - e * e, 1.5);
+  PerturbationBound b;
+  b.accel_mps2 = opt.envelope_factor * env.p_max_mps2 + opt.envelope_floor_mps2;
+  b.rate_mps3 = 4.0 * n_max * b.accel_mps2;
+  mo.bounds_.push_back(b);
+  mo.sampled_.push_back(env.p_max_mps2);
+  return {};
+}
+
+Sgp4Screening Sgp4CatalogBuilder::build(const std::vector<sgp4::MeanElements>& elements,
+                                        const Sgp4MotionOptions& opt) {
+  opt.validate();
+  Sgp4Screening out;
+  out.start_j2000_s = opt.start_j2000_s;
+  if (opt.start_at_latest_epoch) {
+    out.start_j2000_s = -std::numeric_limits<double>::infinity();
+    for (const auto& m : elements)
+      out.start_j2000_s = std::max(out.start_j2000_s, sgp4::epoch_seconds_since_j2000(m));
+    if (elements.empty()) out.start_j2000_s = 0.0;
+  }
+  auto motion = std::make_shared<Sgp4Motion>();
+  motion->velocity_step_s_ = opt.velocity_step_s;
+  for (const auto& m : elements) {
+    SpaceObject obj;
+    const std::string why = accept(*motion, m, out.start_j2000_s, opt, obj);
+    if (!why.empty()) {
+      out.rejected.push_back(RejectedElementSet{m.norad_id, m.name, why});
+      continue;
+    }
+    out.objects.push_back(obj);
+    out.norad_ids.push_back(m.norad_id);
+  }
+  out.motion = std::move(motion);
+  return out;
+}
+
+Sgp4Screening sgp4_screening(const std::vector<sgp4::MeanElements>& elements,
+                             const Sgp4MotionOptions& opt) {
+  return Sgp4CatalogBuilder::build(elements, opt);
+}
+
+}  // namespace evade::conjunction
