@@ -49,6 +49,10 @@ void add_common_options(CLI::App& app, CommonOptions& opts,
 /// Loads the scenario named by --scenario and applies every --set, in order.
 config::Scenario load_scenario(const CommonOptions& opts);
 
+/// The whole text of a file; std::invalid_argument "FLAG: cannot open 'PATH'" if it cannot
+/// be read.
+std::string read_text_file(const std::string& path, const std::string& flag);
+
 /// Prints a JSON document on stdout (pretty, 2-space indent) followed by a newline.
 void print_json(const nlohmann::json& j);
 

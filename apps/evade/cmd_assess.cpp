@@ -7,17 +7,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli.hpp"
 #include "evade/assessment/assess.hpp"
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
 #include "evade/assessment/conjunction_input.hpp"
 #include "evade/config/read_params.hpp"
 
@@ -34,20 +30,6 @@ struct Options {
   long mc = 0;
   std::uint64_t seed = 1;
 };
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("--cdm: cannot open '" + path + "'");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
-Cdm read_cdm_file(const std::string& path) {
-  const std::string text = read_text(path);
-  const auto p = text.find_first_not_of(" \t\r\n");
-  return p != std::string::npos && text[p] == '<' ? read_cdm_xml(text) : read_cdm_kvn(text);
-}
 
 nlohmann::json plane_json(const EncounterPlane* ep, const PrincipalEncounter& pe) {
   nlohmann::json j;
@@ -110,7 +92,7 @@ nlohmann::json run_states(const Options& o) {
   AssessConfig cfg;
   config::read_params(sc, "assessment.", assess_params(), &cfg);
   ConjunctionInput in = o.scenario.empty()
-                            ? conjunction_from_cdm(read_cdm_file(o.cdm), o.hbr_m, config::read_earth(sc))
+                            ? conjunction_from_cdm(read_cdm_text(read_text_file(o.cdm, "--cdm")), o.hbr_m, config::read_earth(sc))
                             : read_conjunction_scenario(sc);
   sc.check_all_used();
   std::optional<MonteCarloOptions> mc;

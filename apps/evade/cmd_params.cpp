@@ -6,6 +6,7 @@
 
 #include "cli.hpp"
 #include "evade/assessment/assess_params.hpp"
+#include "evade/assessment/cam_params.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
@@ -63,6 +64,8 @@ std::string parameters_markdown() {
                 formation::propagation_params());
   md += section("Conjunction assessment (issue 12)", "`evade assess`",
                 "assessment.", assessment::assess_params());
+  md += section("Collision-avoidance manoeuvre (issue 12)", "`evade plan cam`", "cam.",
+                assessment::cam_params());
   return md;
 }
 

@@ -1,9 +1,11 @@
 // evade CLI entry point: builds the command tree from the registry and maps errors to
 // exit codes (0 ok, 1 runtime failure, 2 bad input).
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 #include "cli.hpp"
@@ -47,6 +49,14 @@ config::Scenario load_scenario(const CommonOptions& opts) {
   config::Scenario s = config::Scenario::load(opts.scenario);
   for (const auto& a : opts.sets) s.apply_override(a);
   return s;
+}
+
+std::string read_text_file(const std::string& path, const std::string& flag) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(flag + ": cannot open '" + path + "'");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
 }
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }

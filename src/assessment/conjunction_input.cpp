@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "evade/assessment/cdm_kvn.hpp"
+#include "evade/assessment/cdm_xml.hpp"
 #include "evade/assessment/covariance.hpp"
 #include "evade/config/read_params.hpp"
 
@@ -50,6 +52,11 @@ ObjectState read_object(const config::Scenario& sc, const std::string& p, const 
 }
 
 }  // namespace
+
+Cdm read_cdm_text(const std::string& text) {
+  const auto p = text.find_first_not_of(" \t\r\n");
+  return p != std::string::npos && text[p] == '<' ? read_cdm_xml(text) : read_cdm_kvn(text);
+}
 
 ConjunctionInput read_conjunction_scenario(const config::Scenario& sc) {
   ConjunctionInput in;

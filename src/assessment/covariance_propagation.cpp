@@ -30,7 +30,8 @@ Mat6 state_transition_j2(const StateEci& s, double dt_s, const EarthModel& earth
 Mat6 propagate_covariance_j2(const StateEci& s, const Mat6& cov, double dt_s,
                              const EarthModel& earth) {
   const Mat6 phi = state_transition_j2(s, dt_s, earth);
-  return phi * cov * phi.transpose();
+  const Mat6 p = phi * cov * phi.transpose();
+  return 0.5 * (p + p.transpose());  // symmetric to rounding (long arcs amplify it)
 }
 
 }  // namespace evade::assessment

@@ -18,11 +18,14 @@ constexpr int kMax = BurnPlan::kMaxImpulses;
 static_assert(kMax == evade_burn_plan_t::MAX_IMPULSES, "message capacity = BurnPlan's");
 static_assert(static_cast<int>(PlanFrame::kRsw) == evade_burn_plan_t::FRAME_RSW, "frame code");
 static_assert(static_cast<int>(PlanFrame::kEci) == evade_burn_plan_t::FRAME_ECI, "frame code");
+static_assert(static_cast<int>(PlanSource::kCollisionAvoidance) ==
+                  evade_burn_plan_t::SOURCE_COLLISION_AVOIDANCE, "source code");
 
 bool known_source(int s) noexcept {
   return s == static_cast<int>(PlanSource::kUnknown) ||
          s == static_cast<int>(PlanSource::kThreatArea) ||
-         s == static_cast<int>(PlanSource::kFormation) || s == kObservabilitySource;
+         s == static_cast<int>(PlanSource::kFormation) || s == kObservabilitySource ||
+         s == static_cast<int>(PlanSource::kCollisionAvoidance);
 }
 bool known_objective(int k) noexcept {
   return k >= static_cast<int>(PlanObjective::kPaper) &&
@@ -70,7 +73,7 @@ void check_source(const BurnPlan& p) {
   if (!known_source(p.source))
     bad("source", "= " + std::to_string(p.source) +
                       ": unknown planner code (allowed: 0 unknown, 1 threat-area, 3 formation, "
-                      "4 observability)");
+                      "4 observability, 5 collision avoidance)");
   const ObservabilityPlanInfo& o = p.observability;
   if (o.valid != (p.source == kObservabilitySource))
     bad("observability.valid", std::string("= ") + (o.valid ? "true" : "false") +
@@ -118,7 +121,7 @@ Verdict impulses_verdict(const evade_burn_plan_t& m) noexcept {
 Verdict source_verdict(const evade_burn_plan_t& m) noexcept {
   if (!known_source(m.source))
     return {PlanReject::kMalformed,
-            "evade_burn_plan_t.source: unknown planner code (allowed 0, 1, 3, 4)"};
+            "evade_burn_plan_t.source: unknown planner code (allowed 0, 1, 3, 4, 5)"};
   if (m.source != kObservabilitySource) return {PlanReject::kNone, nullptr};
   if (!known_objective(m.objective))
     return {PlanReject::kMalformed,

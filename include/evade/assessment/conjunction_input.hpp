@@ -11,6 +11,9 @@
 
 namespace evade::assessment {
 
+/// A CDM in KVN or XML form (XML when the first non-blank character is '<'). Throws CdmError.
+Cdm read_cdm_text(const std::string& text);
+
 /// Throws config::ConfigError naming the key.
 ConjunctionInput read_conjunction_scenario(const config::Scenario& sc);
 /// hbr_m <= 0: from AREA_PC of both objects, else std::invalid_argument.

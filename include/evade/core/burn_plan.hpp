@@ -11,12 +11,13 @@
 
 namespace evade {
 
-/// Planner that produced a plan; the number is the paper the planner implements.
+/// Planner that produced a plan; 1..4: the number of the paper the planner implements.
 enum class PlanSource : int {
   kUnknown = 0,
   kThreatArea = 1,     ///< evade plan threat-area (paper 001)
   kFormation = 3,      ///< evade plan formation (paper 003)
   kObservability = 4,  ///< evade plan observability (paper 004), NLopt ISRES (+ polish)
+  kCollisionAvoidance = 5,  ///< evade plan cam: minimum-dv burn for a Pc threshold (issue 12)
 };
 
 /// Objective the observability planner optimized (codes of evade_burn_plan_t's OBJECTIVE_*).

@@ -1,0 +1,126 @@
+// A burn's outcome by propagation and its linear model (include/evade/assessment/cam_encounter.hpp
+// gives the method and the sources).
+#include "evade/assessment/cam_encounter.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "evade/assessment/covariance_propagation.hpp"
+#include "evade/core/frames.hpp"
+
+namespace evade::assessment {
+
+struct CamEncounter::Burned {
+  StateEci primary, secondary;  ///< at the new TCA
+  double t_s = 0.0;             ///< new TCA minus the unburned TCA
+  Mat6 phi = Mat6::Identity();  ///< primary: d x(new TCA) / d x(burn, after the burn)
+  Mat3 cov1 = Mat3::Zero(), cov2 = Mat3::Zero();
+};
+
+namespace {
+
+ObjectState object(const char* name, const StateEci& s, const Mat3& cov) {
+  ObjectState o;
+  o.name = name;
+  o.state = s;
+  o.cov_eci.block<3, 3>(0, 0) = cov;
+  return o;
+}
+
+EncounterOutcome make_outcome(const StateEci& s1, const Mat3& c1, const StateEci& s2,
+                              const Mat3& c2, double t_s, double hbr_m, double rel_tol) {
+  EncounterOutcome e;
+  e.tca_s = t_s;
+  e.miss_m = (s2.r_eci_m - s1.r_eci_m).norm();
+  e.rel_speed_mps = (s2.v_eci_mps - s1.v_eci_mps).norm();
+  e.pc = pc_at_tca(object("primary", s1, c1), object("secondary", s2, c2), hbr_m, rel_tol);
+  return e;
+}
+
+}  // namespace
+
+EncounterOutcome CamLinearModel::predict(const Vec3& dv_rtn_mps) const {
+  const Vec3 d = dv_rtn_mps - dv_ref_rtn_mps;
+  StateEci s1{primary_ref.r_eci_m + dr_ddv * d, primary_ref.v_eci_mps + dv_ddv * d};
+  StateEci s2 = secondary_ref;
+  const Vec3 r = s2.r_eci_m - s1.r_eci_m, v = s2.v_eci_mps - s1.v_eci_mps;
+  const double dt = -r.dot(v) / v.squaredNorm();  // rectilinear shift to the closest approach
+  s1.r_eci_m += s1.v_eci_mps * dt;
+  s2.r_eci_m += s2.v_eci_mps * dt;
+  return make_outcome(s1, cov1_m2, s2, cov2_m2, t_ref_s + dt, hbr_m, pc_rel_tol);
+}
+
+CamEncounter::CamEncounter(const ConjunctionInput& in, double lead_s, const AssessConfig& cfg)
+    : cfg_(cfg), earth_(in.earth), lead_s_(lead_s), hbr_m_(in.hbr_m) {
+  if (!std::isfinite(lead_s) || !(lead_s > 0.0))
+    throw std::invalid_argument("lead_s = " + std::to_string(lead_s) +
+                                ": the burn must come a finite time > 0 s before TCA");
+  a_ = assess(in, cfg);
+  for (int i = 0; i < 2; ++i) six_[i] = in.obj[i].has_velocity_cov;
+  burn_state_ = propagate_j2(a_.at_tca[0].state, -lead_s, earth_);
+  cov1_burn_ = six_[0] ? propagate_covariance_j2(a_.at_tca[0].state, a_.at_tca[0].cov_eci,
+                                                 -lead_s, earth_)
+                       : a_.at_tca[0].cov_eci;
+  rtn_to_eci_ = rotation_eci_to_rsw(burn_state_).transpose();
+}
+
+CamEncounter::Burned CamEncounter::propagate_burn(const Vec3& dv_rtn_mps) const {
+  StateEci s = burn_state_;
+  s.v_eci_mps += rtn_to_eci_ * dv_rtn_mps;
+  Burned b;
+  b.primary = propagate_j2(s, lead_s_, earth_);
+  b.secondary = a_.at_tca[1].state;
+  bool converged = false;
+  for (int it = 0; it < 50 && !converged; ++it) {  // Newton on the range rate
+    const Vec3 r = b.secondary.r_eci_m - b.primary.r_eci_m;
+    const Vec3 v = b.secondary.v_eci_mps - b.primary.v_eci_mps;
+    const double dt = -r.dot(v) / v.squaredNorm();
+    converged = std::abs(dt) < 1e-6;
+    if (converged) break;
+    if (!(std::abs(b.t_s + dt) <= cfg_.tca_search_s))
+      throw std::invalid_argument(
+          "after the burn no local TCA within assessment.tca_search_s = " +
+          std::to_string(cfg_.tca_search_s) + " s of the first TCA");
+    b.primary = propagate_j2(b.primary, dt, earth_);
+    b.secondary = propagate_j2(b.secondary, dt, earth_);
+    b.t_s += dt;
+  }
+  if (!converged) throw std::invalid_argument("after the burn the TCA iteration did not converge");
+  b.cov1 = a_.at_tca[0].cov_eci.block<3, 3>(0, 0);
+  b.cov2 = a_.at_tca[1].cov_eci.block<3, 3>(0, 0);
+  b.phi = state_transition_j2(s, lead_s_ + b.t_s, earth_);
+  if (six_[0]) {
+    const Mat3 c = (b.phi * cov1_burn_ * b.phi.transpose()).block<3, 3>(0, 0);
+    b.cov1 = 0.5 * (c + c.transpose());  // symmetric to rounding
+  }
+  if (six_[1])
+    b.cov2 = propagate_covariance_j2(a_.at_tca[1].state, a_.at_tca[1].cov_eci, b.t_s, earth_)
+                 .block<3, 3>(0, 0);
+  return b;
+}
+
+EncounterOutcome CamEncounter::outcome(const Vec3& dv_rtn_mps) const {
+  const Burned b = propagate_burn(dv_rtn_mps);
+  return make_outcome(b.primary, b.cov1, b.secondary, b.cov2, b.t_s, hbr_m_, cfg_.pc_rel_tol);
+}
+
+CamLinearModel CamEncounter::linearize(const Vec3& dv_rtn_mps, EncounterOutcome* at_ref) const {
+  const Burned b = propagate_burn(dv_rtn_mps);
+  CamLinearModel m;
+  m.dv_ref_rtn_mps = dv_rtn_mps;
+  m.t_ref_s = b.t_s;
+  m.primary_ref = b.primary;
+  m.secondary_ref = b.secondary;
+  m.cov1_m2 = b.cov1;
+  m.cov2_m2 = b.cov2;
+  m.dr_ddv = b.phi.block<3, 3>(0, 3) * rtn_to_eci_;
+  m.dv_ddv = b.phi.block<3, 3>(3, 3) * rtn_to_eci_;
+  m.hbr_m = hbr_m_;
+  m.pc_rel_tol = cfg_.pc_rel_tol;
+  if (at_ref)
+    *at_ref = make_outcome(b.primary, b.cov1, b.secondary, b.cov2, b.t_s, hbr_m_, cfg_.pc_rel_tol);
+  return m;
+}
+
+}  // namespace evade::assessment

@@ -1,0 +1,316 @@
+// The minimum-dv collision-avoidance burn (include/evade/assessment/cam_planner.hpp gives the
+// method and the sources).
+#include "evade/assessment/cam_planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlopt.hpp>
+
+#include "evade/assessment/encounter_plane.hpp"
+
+namespace evade::assessment {
+namespace {
+
+using Mat23 = Eigen::Matrix<double, 2, 3>;
+
+std::string num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
+}
+
+bool feasible(const EncounterOutcome& e, double pc_target, double min_miss_m) {
+  return e.pc <= pc_target && e.miss_m >= min_miss_m;
+}
+
+[[noreturn]] void unreachable(const CamRequest& req, double dv_mps, const CamConfig& cfg) {
+  throw std::invalid_argument(
+      "pc_max = " + num(req.pc_max) + (req.min_miss_m > 0 ? " with min_miss_m = " + num(req.min_miss_m) : "") +
+      " is unreachable at lead_s = " + num(req.lead_s) + " s" +
+      (req.along_track_only ? " (along track only)" : "") + ": it needs |dv| " +
+      (std::isfinite(dv_mps) ? "= " + num(dv_mps) : "beyond the search") + " m/s > cam.max_dv_mps = " +
+      num(cfg.max_dv_mps) + " m/s");
+}
+
+// The model with the encounter plane held at the reference TCA (step 1).
+struct PlaneModel {
+  Vec2 m0 = Vec2::Zero();  ///< miss point of dv = 0
+  Mat23 a = Mat23::Zero(); ///< d miss point / d dv_rtn
+  Mat2 w = Mat2::Identity();  ///< (A A^T)^-1
+  Mat2 cov = Mat2::Identity();
+  double hbr_m = 0.0, rel_tol = 1e-8;
+
+  double pc(const Vec2& m) const {
+    EncounterPlane ep;
+    ep.miss_m = m;
+    ep.cov_m2 = cov;
+    return pc_2d(principal_axes(ep), hbr_m, rel_tol).pc;
+  }
+  double cost(const Vec2& m) const { return (m - m0).dot(w * (m - m0)); }
+  Vec3 burn(const Vec2& m) const { return a.transpose() * (w * (m - m0)); }
+};
+
+PlaneModel plane_model(const CamLinearModel& m) {
+  const EncounterPlane ep = encounter_plane(m.primary_ref, m.cov1_m2, m.secondary_ref, m.cov2_m2);
+  Mat23 p;
+  p.row(0) = ep.axes_eci.row(0);
+  p.row(1) = ep.axes_eci.row(2);
+  PlaneModel pm;
+  pm.a = -p * m.dr_ddv;
+  pm.m0 = p * (m.secondary_ref.r_eci_m - m.primary_ref.r_eci_m) - pm.a * m.dv_ref_rtn_mps;
+  const Mat2 aat = pm.a * pm.a.transpose();
+  if (!(std::abs(aat.determinant()) > 1e-30 * aat.squaredNorm()))
+    throw std::invalid_argument("the burn cannot move the miss point in two directions");
+  pm.w = aat.inverse();
+  pm.cov = ep.cov_m2;
+  pm.hbr_m = m.hbr_m;
+  pm.rel_tol = m.pc_rel_tol;
+  return pm;
+}
+
+// Smallest radius >= min_miss_m along u where Pc <= p (Pc decreases along the ray).
+double boundary_radius(const PlaneModel& pm, const Vec2& u, double p, double min_miss_m) {
+  double lo = min_miss_m;
+  if (pm.pc(lo * u) <= p) return lo;
+  double hi = std::max(2.0 * lo, std::sqrt(pm.cov.trace()) + pm.hbr_m);
+  for (int i = 0; i < 200 && pm.pc(hi * u) > p; ++i) {
+    lo = hi;
+    hi *= 2.0;
+  }
+  for (int i = 0; i < 100 && hi - lo > 1e-9 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (pm.pc(mid * u) > p ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+Vec2 boundary_point(const PlaneModel& pm, double theta, double p, double min_miss_m) {
+  const Vec2 u(std::cos(theta), std::sin(theta));
+  return boundary_radius(pm, u, p, min_miss_m) * u;
+}
+
+// Step 1: the best boundary direction, refined by golden section.
+Vec3 sweep_boundary(const PlaneModel& pm, double p, double min_miss_m, int angles) {
+  const double step = kTwoPi / angles;
+  int best = 0;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < angles; ++k) {
+    const double c = pm.cost(boundary_point(pm, k * step, p, min_miss_m));
+    if (c < best_cost) best_cost = c, best = k;
+  }
+  double lo = (best - 1) * step, hi = (best + 1) * step;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = pm.cost(boundary_point(pm, x1, p, min_miss_m));
+  double f2 = pm.cost(boundary_point(pm, x2, p, min_miss_m));
+  for (int i = 0; i < 60 && hi - lo > 1e-12; ++i) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo);
+      f1 = pm.cost(boundary_point(pm, x1, p, min_miss_m));
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo);
+      f2 = pm.cost(boundary_point(pm, x2, p, min_miss_m));
+    }
+  }
+  const double theta = f1 < f2 ? x1 : x2;
+  if (std::min(f1, f2) > best_cost) return pm.burn(boundary_point(pm, best * step, p, min_miss_m));
+  return pm.burn(boundary_point(pm, theta, p, min_miss_m));
+}
+
+struct NloptData {
+  const CamLinearModel* m;
+  double p, min_miss_m;
+};
+
+double constraint_value(const NloptData& d, const Vec3& x, int which) {
+  const EncounterOutcome e = d.m->predict(x);
+  if (which == 0) return std::log(std::max(e.pc, 1e-300) / d.p);
+  return (d.min_miss_m - e.miss_m) / std::max(d.min_miss_m, 1.0);
+}
+
+template <int kWhich>
+double nlopt_constraint(unsigned, const double* x, double* grad, void* data) {
+  const auto& d = *static_cast<const NloptData*>(data);
+  const Vec3 v(x[0], x[1], x[2]);
+  if (grad) {
+    const double h = 1e-5 * std::max(v.norm(), 1e-4);
+    for (int j = 0; j < 3; ++j) {
+      Vec3 vp = v, vm = v;
+      vp(j) += h;
+      vm(j) -= h;
+      grad[j] = (constraint_value(d, vp, kWhich) - constraint_value(d, vm, kWhich)) / (2.0 * h);
+    }
+  }
+  return constraint_value(d, v, kWhich);
+}
+
+double nlopt_objective(unsigned, const double* x, double* grad, void*) {
+  if (grad) for (int j = 0; j < 3; ++j) grad[j] = 2.0 * x[j];
+  return x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+}
+
+// Step 2: SLSQP on the full linear model from the sweep's burn.
+Vec3 polish(const CamLinearModel& m, const CamRequest& req, double p, const Vec3& start,
+            int* result) {
+  NloptData d{&m, p, req.min_miss_m};
+  nlopt::opt o(nlopt::LD_SLSQP, 3);
+  o.set_min_objective(nlopt_objective, nullptr);
+  o.add_inequality_constraint(nlopt_constraint<0>, &d, 1e-10);
+  if (req.min_miss_m > 0.0) o.add_inequality_constraint(nlopt_constraint<1>, &d, 1e-10);
+  o.set_xtol_rel(1e-10);
+  o.set_maxeval(200);
+  std::vector<double> x(start.data(), start.data() + 3);
+  double f = 0.0;
+  try {
+    *result = static_cast<int>(o.optimize(x, f));
+  } catch (const std::exception&) {
+    *result = -1;
+    return start;
+  }
+  const Vec3 v(x[0], x[1], x[2]);
+  return feasible(m.predict(v), p, req.min_miss_m) && v.norm() <= start.norm() ? v : start;
+}
+
+// The smallest scale >= 1 of dv that the model finds feasible (closes the fixed-plane gap).
+Vec3 make_feasible(const CamLinearModel& m, const CamRequest& req, double p, const Vec3& dv) {
+  if (feasible(m.predict(dv), p, req.min_miss_m)) return dv;
+  double lo = 1.0, hi = 1.0 + 1e-9;
+  while (!feasible(m.predict(hi * dv), p, req.min_miss_m)) {
+    lo = hi;
+    hi = 1.0 + 2.0 * (hi - 1.0);
+    if (hi > 2.0) throw std::invalid_argument("the linear model has no feasible burn along the sweep's");
+  }
+  for (int i = 0; i < 60 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (feasible(m.predict(mid * dv), p, req.min_miss_m) ? hi : lo) = mid;
+  }
+  return hi * dv;
+}
+
+// along_track_only: the first feasible |dv_T| on each side (bracket, then bisection).
+Vec3 solve_along_track(const CamLinearModel& m, const CamRequest& req, double p,
+                       const CamConfig& cfg) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const double sign : {1.0, -1.0}) {
+    const auto ok = [&](double s) {
+      return feasible(m.predict(Vec3(0.0, sign * s, 0.0)), p, req.min_miss_m);
+    };
+    double lo = 0.0, hi = 1e-7;
+    while (!ok(hi) && hi <= 2.0 * cfg.max_dv_mps) lo = hi, hi *= 2.0;
+    if (!ok(hi)) continue;
+    for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (ok(mid) ? hi : lo) = mid;
+    }
+    if (hi < std::abs(best)) best = sign * hi;
+  }
+  if (!std::isfinite(best)) unreachable(req, best, cfg);
+  return Vec3(0.0, best, 0.0);
+}
+
+}  // namespace
+
+void validate_cam_request(const CamRequest& req, const CamConfig& cfg) {
+  if (!std::isfinite(req.lead_s) || !(req.lead_s > 0.0))
+    throw std::invalid_argument("lead_s = " + num(req.lead_s) + ": must be a finite time > 0 s");
+  if (req.lead_s > cfg.max_lead_s)
+    throw std::invalid_argument("lead_s = " + num(req.lead_s) + " s is past the span " +
+                                "cam.max_lead_s = " + num(cfg.max_lead_s) + " s");
+  if (!(req.pc_max > 0.0 && req.pc_max < 1.0))
+    throw std::invalid_argument("pc_max = " + num(req.pc_max) + ": must be in (0, 1)");
+  if (!std::isfinite(req.min_miss_m) || req.min_miss_m < 0.0)
+    throw std::invalid_argument("min_miss_m = " + num(req.min_miss_m) + ": must be >= 0 m");
+}
+
+Vec3 solve_cam_model(const CamLinearModel& m, const CamRequest& req, double pc_target,
+                     const CamConfig& cfg, std::string* search, int* nlopt_result) {
+  *nlopt_result = 0;
+  Vec3 dv = Vec3::Zero();
+  if (feasible(m.predict(dv), pc_target, req.min_miss_m)) {
+    *search = "none: the model meets the request without a burn";
+  } else if (req.along_track_only) {
+    dv = solve_along_track(m, req, pc_target, cfg);
+    *search = "along-track 1-D: bracket and bisection of the first feasible |dv_T| on each side";
+  } else {
+    const PlaneModel pm = plane_model(m);
+    const Vec3 start = make_feasible(
+        m, req, pc_target, sweep_boundary(pm, pc_target, req.min_miss_m, cfg.boundary_angles));
+    dv = polish(m, req, pc_target, start, nlopt_result);
+    *search = "encounter-plane boundary sweep (" + std::to_string(cfg.boundary_angles) +
+              " directions, golden section) + NLopt SLSQP";
+  }
+  if (!(dv.norm() <= cfg.max_dv_mps)) unreachable(req, dv.norm(), cfg);
+  return dv;
+}
+
+CamPlan plan_cam(const CamEncounter& enc, const CamRequest& req, const CamConfig& cfg) {
+  validate_cam_request(req, cfg);
+  const Assessment& a = enc.assessment();
+  CamPlan plan;
+  plan.lead_s = enc.lead_s();
+  plan.tca_from_epoch_s = a.tca_shift_s;
+  plan.burn_from_epoch_s = a.tca_shift_s - enc.lead_s();
+  plan.primary_at_burn = enc.primary_at_burn();
+  plan.pc_target = req.pc_max * (1.0 - cfg.pc_margin);
+  plan.before = {0.0, a.pc_2d.pc, a.plane.miss_3d_m, a.plane.rel_speed_mps};
+  if (feasible(plan.before, req.pc_max, req.min_miss_m)) {
+    plan.maneuver_needed = false;
+    plan.predicted = plan.predicted_first = plan.verified = plan.before;
+    plan.verified_ok = true;
+    plan.search = "none: Pc and miss already meet the request";
+    return plan;
+  }
+  CamRequest aim = req;  // what the planner aims at: the request with its margins
+  if (req.min_miss_m > 0.0) aim.min_miss_m = req.min_miss_m + cfg.miss_margin_m;
+  const CamLinearModel first = enc.linearize(Vec3::Zero());
+  CamLinearModel m = first;
+  for (int k = 0; k < cfg.max_relinearizations; ++k) {
+    const Vec3 dv = solve_cam_model(m, aim, plan.pc_target, cfg, &plan.search, &plan.nlopt_result);
+    plan.last_change_mps = (dv - m.dv_ref_rtn_mps).norm();
+    plan.dv_rtn_mps = dv;
+    plan.predicted = m.predict(dv);
+    plan.relinearizations = k + 1;
+    if (plan.last_change_mps < cfg.dv_tol_mps || k + 1 == cfg.max_relinearizations) break;
+    m = enc.linearize(dv);
+  }
+  plan.predicted_first = first.predict(plan.dv_rtn_mps);
+  plan.dv_mps = plan.dv_rtn_mps.norm();
+  plan.dv_eci_mps = enc.rtn_to_eci() * plan.dv_rtn_mps;
+  plan.verified = enc.outcome(plan.dv_rtn_mps);
+  plan.verified_ok = feasible(plan.verified, req.pc_max, req.min_miss_m);
+  return plan;
+}
+
+CamPlan plan_cam(const ConjunctionInput& in, const CamRequest& req, const AssessConfig& acfg,
+                 const CamConfig& cfg) {
+  validate_cam_request(req, cfg);
+  return plan_cam(CamEncounter(in, req.lead_s, acfg), req, cfg);
+}
+
+std::vector<CamSweepRow> sweep_cam_lead(const ConjunctionInput& in, const std::vector<double>& leads_s,
+                                        const CamRequest& req, const AssessConfig& acfg,
+                                        const CamConfig& cfg) {
+  std::vector<CamSweepRow> rows;
+  for (const double lead : leads_s) {
+    CamSweepRow row;
+    row.lead_s = lead;
+    CamRequest r = req;
+    r.lead_s = lead;
+    try {
+      row.plan = plan_cam(in, r, acfg, cfg);
+      row.ok = true;
+    } catch (const std::invalid_argument& e) {
+      row.error = e.what();
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace evade::assessment
