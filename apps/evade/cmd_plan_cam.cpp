@@ -3,9 +3,9 @@
 // (evade::assessment::plan_cam), verified by propagation. The conjunction comes from a
 // scenario's `conjunction:` block (--scenario) or a CCSDS CDM (--cdm). --sweep-lead A:B:N
 // prints the trade space (lead time against Δv, Pc before and after) as CSV, or JSON with
-// --json. --publish URL sends the plan as evade_burn_plan_t on LCM
-// (evade::lcm_link::publish_burn_plan), its epoch the burn's UTC: the CDM's TCA minus the
-// lead, or --epoch-utc (the UTC of the scenario's states) minus the lead.
+// --json. --publish sends the plan as evade_burn_plan_t on LCM (plan_output.hpp: the same
+// path and options as the other planners), one impulse at the plan's epoch: the burn's utime,
+// from the CDM's TCA minus the lead, or --epoch-utime (a scenario has no UTC).
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -15,12 +15,12 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "plan_output.hpp"
 #include "evade/assessment/cam_burn_plan.hpp"
 #include "evade/assessment/cam_planner.hpp"
 #include "evade/assessment/conjunction_input.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/core/epoch.hpp"
-#include "evade/lcm_link/burn_plan_publisher.hpp"
 
 namespace evade::cli {
 namespace {
@@ -28,13 +28,12 @@ namespace {
 using namespace evade::assessment;
 
 struct Options {
-  std::string scenario, cdm, sweep, publish_url, epoch_utc;
+  std::string scenario, cdm, sweep;
   std::vector<std::string> sets;
   bool json = false;
   double hbr_m = 0.0;
   CamRequest req;
-  std::string channel = "EVADE_BURN_PLAN";
-  long seq = 0;
+  PlanOutputOptions out;
 };
 
 struct Inputs {
@@ -64,10 +63,6 @@ Inputs read_inputs(const Options& o) {
   } else {
     in.conj = read_conjunction_scenario(sc);
     in.source = "scenario " + sc.source();
-  }
-  if (!o.epoch_utc.empty()) {
-    in.epoch_j2000_s = seconds_since_j2000_from_calendar(parse_calendar_utc(o.epoch_utc));
-    in.epoch_known = true;
   }
   sc.check_all_used();
   return in;
@@ -165,15 +160,16 @@ int run(const Options& o) {
   const CamPlan p = plan_cam(in.conj, o.req, in.acfg, in.cfg);
   nlohmann::json j = plan_json(p, in);
   j["source"] = in.source;
-  if (!o.publish_url.empty()) {
-    if (!in.epoch_known)
-      throw std::invalid_argument("--publish: the burn's UTC is unknown: give --epoch-utc (the UTC of the scenario's states)");
-    lcm_link::PlanStamp stamp;
-    stamp.epoch_utime = unix_utime_from_j2000(in.epoch_j2000_s + p.burn_from_epoch_s);
-    const std::int64_t utime = lcm_link::publish_burn_plan(o.publish_url, o.channel,
-                                                           make_cam_burn_plan(p, o.seq), o.seq, stamp);
-    j["published"] = {{"url", o.publish_url}, {"channel", o.channel}, {"seq", o.seq},
-                      {"utime", utime}, {"epoch_utime", stamp.epoch_utime}};
+  if (plan_wanted(o.out)) {
+    PlanOutputOptions out = o.out;
+    if (out.epoch_utime_us == 0 && !in.epoch_known)
+      throw std::invalid_argument("--publish: the burn's time is unknown (a scenario has no UTC): "
+                                  "give --epoch-utime, the utime of the burn [us]");
+    if (out.epoch_utime_us == 0)
+      out.epoch_utime_us = unix_utime_from_j2000(in.epoch_j2000_s + p.burn_from_epoch_s);
+    const BurnPlan bp = make_cam_burn_plan(p, plan_id(out));
+    j["plan"] = impulses_json(bp);
+    output_plan(out, bp, &j);
   }
   if (o.json) print_json(j); else print_text(p, in);
   if (!p.verified_ok) {
@@ -197,10 +193,7 @@ const bool kRegistered = register_command(
       app.add_option("--min-miss-m", o->req.min_miss_m, "smallest miss distance after the burn [m]");
       app.add_flag("--along-track-only", o->req.along_track_only, "burn along track only");
       app.add_option("--sweep-lead", o->sweep, "A:B:N: plan at N lead times from A to B s (trade space)");
-      app.add_option("--publish", o->publish_url, "publish the plan as evade_burn_plan_t on this LCM URL");
-      app.add_option("--epoch-utc", o->epoch_utc, "UTC of the scenario's states (for --publish)");
-      app.add_option("--channel", o->channel, "LCM channel for --publish")->capture_default_str();
-      app.add_option("--seq", o->seq, "seq (plan id) of the published plan")->check(CLI::NonNegativeNumber);
+      add_plan_output_options(app, o->out);
       app.add_flag("--json", o->json, "print a machine-readable JSON result on stdout");
       return [o]() { return run(*o); };
     });
