@@ -5,7 +5,8 @@
 // prints the trade space (lead time against Δv, Pc before and after) as CSV, or JSON with
 // --json. --publish sends the plan as evade_burn_plan_t on LCM (plan_output.hpp: the same
 // path and options as the other planners), one impulse at the plan's epoch: the burn's utime,
-// from the CDM's TCA minus the lead, or --epoch-utime (a scenario has no UTC).
+// from the CDM's TCA minus the lead, or --epoch-utime (a scenario has no UTC); --plan-out
+// writes it as a plan file (its t = 0 the burn).
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -162,10 +163,10 @@ int run(const Options& o) {
   j["source"] = in.source;
   if (plan_wanted(o.out)) {
     PlanOutputOptions out = o.out;
-    if (out.epoch_utime_us == 0 && !in.epoch_known)
+    if (out.publish && out.epoch_utime_us == 0 && !in.epoch_known)
       throw std::invalid_argument("--publish: the burn's time is unknown (a scenario has no UTC): "
                                   "give --epoch-utime, the utime of the burn [us]");
-    if (out.epoch_utime_us == 0)
+    if (out.epoch_utime_us == 0 && in.epoch_known)
       out.epoch_utime_us = unix_utime_from_j2000(in.epoch_j2000_s + p.burn_from_epoch_s);
     const BurnPlan bp = make_cam_burn_plan(p, plan_id(out));
     j["plan"] = impulses_json(bp);

@@ -24,7 +24,8 @@ struct Source {
 constexpr Source kSources[] = {{PlanSource::kUnknown, "unknown"},
                                {PlanSource::kThreatArea, "threat-area"},
                                {PlanSource::kFormation, "formation"},
-                               {PlanSource::kObservability, "observability"}};
+                               {PlanSource::kObservability, "observability"},
+                               {PlanSource::kCollisionAvoidance, "collision-avoidance"}};
 
 [[noreturn]] void fail(const std::string& where, const std::string& field,
                        const std::string& what) {
@@ -82,8 +83,8 @@ int read_source(const json& j, const std::string& where) {
     for (const Source& s : kSources)
       if (j.get<std::string>() == s.name) return static_cast<int>(s.code);
   fail(where, "source", "= " + j.dump() +
-                            ": expected \"threat-area\", \"formation\", \"observability\" or "
-                            "\"unknown\"");
+                            ": expected \"threat-area\", \"formation\", \"observability\", "
+                            "\"collision-avoidance\" or \"unknown\"");
 }
 
 guidance::PlanFrame read_frame(const json& j, const std::string& where) {

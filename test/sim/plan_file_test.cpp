@@ -67,6 +67,15 @@ TEST(PlanFile, WrittenAndReadBackBitExact) {
   EXPECT_FALSE(g.plan.observability.valid);
 }
 
+TEST(PlanFile, EveryPlannerSourceRoundTrips) {
+  for (const PlanSource src : {PlanSource::kUnknown, PlanSource::kThreatArea, PlanSource::kFormation,
+                               PlanSource::kObservability, PlanSource::kCollisionAvoidance}) {
+    PlanFile f = two_burns();
+    f.plan.source = static_cast<int>(src);
+    EXPECT_EQ(parse_plan_file(plan_file_json(f), "p.json").plan.source, static_cast<int>(src));
+  }
+}
+
 TEST(PlanFile, EachBadFieldIsRefusedNamingIt) {
   expect_refused(edited("\"plan_id\"", "\"plan_ident\""), "plan_ident is not a known key");
   expect_refused(edited("\"t_s\": 43200.0", "\"t_s\": 43200.0, \"dt_s\": 1"),

@@ -6,7 +6,7 @@
 //   {
 //     "format": "evade.burn_plan.v1",
 //     "plan_id": 1,
-//     "source": "formation",            // threat-area | formation | observability | unknown
+//     "source": "formation",            // threat-area | formation | observability | collision-avoidance | unknown
 //     "frame": "rsw",                   // rsw | eci: the Δv the node flies
 //     "impulses": [
 //       {"t_s": 43200.0, "dv_rsw_mps": [6.2e-07, 0.0058078, 0.0],
