@@ -95,16 +95,9 @@ Vec2 boundary_point(const PlaneModel& pm, double theta, double p, double min_mis
   return boundary_radius(pm, u, p, min_miss_m) * u;
 }
 
-// Step 1: the best boundary direction, refined by golden section.
-Vec3 sweep_boundary(const PlaneModel& pm, double p, double min_miss_m, int angles) {
-  const double step = kTwoPi / angles;
-  int best = 0;
-  double best_cost = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < angles; ++k) {
-    const double c = pm.cost(boundary_point(pm, k * step, p, min_miss_m));
-    if (c < best_cost) best_cost = c, best = k;
-  }
-  double lo = (best - 1) * step, hi = (best + 1) * step;
+// Golden-section refinement of the boundary cost on [lo, hi] (a bracket of a grid minimum).
+double refine_angle(const PlaneModel& pm, double lo, double hi, double p, double min_miss_m,
+                    double* cost) {
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
   double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
   double f1 = pm.cost(boundary_point(pm, x1, p, min_miss_m));
@@ -118,9 +111,31 @@ Vec3 sweep_boundary(const PlaneModel& pm, double p, double min_miss_m, int angle
       f2 = pm.cost(boundary_point(pm, x2, p, min_miss_m));
     }
   }
-  const double theta = f1 < f2 ? x1 : x2;
-  if (std::min(f1, f2) > best_cost) return pm.burn(boundary_point(pm, best * step, p, min_miss_m));
-  return pm.burn(boundary_point(pm, theta, p, min_miss_m));
+  *cost = std::min(f1, f2);
+  return f1 < f2 ? x1 : x2;
+}
+
+// Step 1: every local minimum of the boundary cost on the grid of directions, refined by
+// golden section; the best. (Near a whole number of orbits the radial and normal burns barely
+// move the miss point, A A^T is nearly singular and the cost has sharp valleys where the
+// along-track line crosses the boundary: each valley is refined, not only the grid's best.)
+Vec3 sweep_boundary(const PlaneModel& pm, double p, double min_miss_m, int angles) {
+  const double step = kTwoPi / angles;
+  std::vector<double> c(static_cast<std::size_t>(angles));
+  for (int k = 0; k < angles; ++k)
+    c[static_cast<std::size_t>(k)] = pm.cost(boundary_point(pm, k * step, p, min_miss_m));
+  double best_theta = 0.0, best_cost = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < angles; ++k) {
+    const double ck = c[static_cast<std::size_t>(k)];
+    const double cl = c[static_cast<std::size_t>((k + angles - 1) % angles)];
+    const double cr = c[static_cast<std::size_t>((k + 1) % angles)];
+    if (ck > cl || ck > cr) continue;  // not a local minimum of the grid
+    if (ck < best_cost) best_cost = ck, best_theta = k * step;
+    double refined = 0.0;
+    const double t = refine_angle(pm, (k - 1) * step, (k + 1) * step, p, min_miss_m, &refined);
+    if (refined < best_cost) best_cost = refined, best_theta = t;
+  }
+  return pm.burn(boundary_point(pm, best_theta, p, min_miss_m));
 }
 
 struct NloptData {
@@ -239,11 +254,18 @@ Vec3 solve_cam_model(const CamLinearModel& m, const CamRequest& req, double pc_t
     *search = "along-track 1-D: bracket and bisection of the first feasible |dv_T| on each side";
   } else {
     const PlaneModel pm = plane_model(m);
-    const Vec3 start = make_feasible(
+    Vec3 start = make_feasible(
         m, req, pc_target, sweep_boundary(pm, pc_target, req.min_miss_m, cfg.boundary_angles));
+    try {  // the along-track burn as a second start: the best of the two goes on
+      const Vec3 along = solve_along_track(m, req, pc_target, cfg);
+      if (along.norm() < start.norm()) start = along;
+    } catch (const std::invalid_argument&) {
+      // no along-track burn within the cap: the sweep's start stands
+    }
     dv = polish(m, req, pc_target, start, nlopt_result);
     *search = "encounter-plane boundary sweep (" + std::to_string(cfg.boundary_angles) +
-              " directions, golden section) + NLopt SLSQP";
+              " directions, every local minimum refined by golden section) and the along-track "
+              "burn as starts, + NLopt SLSQP";
   }
   if (!(dv.norm() <= cfg.max_dv_mps)) unreachable(req, dv.norm(), cfg);
   return dv;

@@ -3,8 +3,8 @@
 // min_miss_m.
 //
 // Problem: minimise |dv| over dv in the primary's RTN frame (or dv = (0, dv_T, 0) with
-// along_track_only) subject to Pc(dv) <= pc_max (1 - cam.pc_margin) and miss(dv) >= min_miss_m,
-// |dv| <= cam.max_dv_mps. Method, on the linear model of cam_encounter.hpp:
+// along_track_only) subject to Pc(dv) <= pc_max (1 - cam.pc_margin) and
+// miss(dv) >= min_miss_m + cam.miss_margin_m, |dv| <= cam.max_dv_mps. Method, on the linear model of cam_encounter.hpp:
 //  1. Encounter-plane reduction. With the encounter plane held fixed, a burn moves the miss
 //     point linearly, m(dv) = m0 + A dv (A = -[x^T; z^T] dr/ddv, 2x3), and the minimum-norm
 //     burn reaching a point m is dv = A^+ (m - m0), |dv|^2 = (m - m0)^T (A A^T)^-1 (m - m0).
@@ -12,9 +12,12 @@
 //     symmetric and log-concave (Prekopa 1973: convolution preserves log-concavity), so the
 //     region Pc >= p is convex and star-shaped about the origin and along each ray from the
 //     origin Pc decreases; its boundary radius rho(theta) is found by bisection, raised to
-//     min_miss_m (the miss disk). The best of cam.boundary_angles directions, refined by
-//     golden section, is the optimum of the fixed-plane model.
-//  2. NLopt SLSQP (Kraft 1988) polishes it on the full linear model (the encounter plane
+//     min_miss_m (the miss disk). Every local minimum of the cost over cam.boundary_angles
+//     directions is refined by golden section; the best is the optimum of the fixed-plane
+//     model. Near a whole number of orbits after the burn, radial and normal burns barely
+//     move the miss point (A A^T nearly singular) and the cost has sharp valleys; the
+//     along-track burn (below) is therefore a second start.
+//  2. NLopt SLSQP (Kraft 1988) polishes the better start on the full linear model (the encounter plane
 //     follows the relative velocity, the TCA moves): objective |dv|^2, constraints
 //     ln(Pc/p) <= 0 and (min_miss - miss)/max(min_miss, 1 m) <= 0 with central-difference
 //     gradients; it is kept only when it is feasible and not larger.
