@@ -3,11 +3,13 @@
 // encounter plane directly (--encounter-plane MISS_X_M,MISS_Y_M,SIGMA_X_M,SIGMA_Y_M,HBR_M).
 // Parses, calls evade::assessment and prints; --json prints miss_m, rel_speed_mps, pc_2d,
 // pc_chan, pc_max (and pc_mc, pc_mc_low, pc_mc_high with --mc N --seed S), the encounter
-// plane used, how the states were brought to TCA and the short-term validity verdict.
+// plane used, how the states were brought to TCA and the short-term validity verdict; with
+// --cdm also the message's own TCA, MISS_DISTANCE, RELATIVE_SPEED and COLLISION_PROBABILITY.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -85,20 +87,37 @@ nlohmann::json assessment_json(const Assessment& a, double hbr_m) {
   return j;
 }
 
+// The message's own relative values, beside what is recomputed from its states.
+nlohmann::json cdm_json(const Cdm& c) {
+  auto num = [&](const char* k) {
+    const std::string v = cdm_value(c.relative, k);
+    return v.empty() ? nlohmann::json(nullptr) : nlohmann::json(std::stod(v));
+  };
+  const std::string method = cdm_value(c.relative, "COLLISION_PROBABILITY_METHOD");
+  return {{"message_id", cdm_value(c.header, "MESSAGE_ID")},
+          {"tca", cdm_value(c.relative, "TCA")},
+          {"miss_distance_m", num("MISS_DISTANCE")},
+          {"relative_speed_mps", num("RELATIVE_SPEED")},
+          {"collision_probability", num("COLLISION_PROBABILITY")},
+          {"collision_probability_method", method.empty() ? nlohmann::json(nullptr) : nlohmann::json(method)}};
+}
+
 nlohmann::json run_states(const Options& o) {
   config::Scenario sc = o.scenario.empty() ? config::Scenario::empty("--cdm")
                                            : config::Scenario::load(o.scenario);
   for (const auto& a : o.sets) sc.apply_override(a);
   AssessConfig cfg;
   config::read_params(sc, "assessment.", assess_params(), &cfg);
-  ConjunctionInput in = o.scenario.empty()
-                            ? conjunction_from_cdm(read_cdm_text(read_text_file(o.cdm, "--cdm")), o.hbr_m, config::read_earth(sc))
+  std::optional<Cdm> cdm;
+  if (o.scenario.empty()) cdm = read_cdm_text(read_text_file(o.cdm, "--cdm"));
+  ConjunctionInput in = cdm ? conjunction_from_cdm(*cdm, o.hbr_m, config::read_earth(sc))
                             : read_conjunction_scenario(sc);
   sc.check_all_used();
   std::optional<MonteCarloOptions> mc;
   if (o.mc > 0) mc = MonteCarloOptions{o.mc, o.seed, 0.0, 1.96};
   nlohmann::json j = assessment_json(assess(in, cfg, mc), in.hbr_m);
   j["source"] = o.scenario.empty() ? "cdm " + o.cdm : "scenario " + sc.source();
+  if (cdm) j["cdm"] = cdm_json(*cdm);
   return j;
 }
 

@@ -25,6 +25,7 @@
 
 #include "cli.hpp"
 #include "cmd_screen_catalog.hpp"
+#include "screen_cdm_out.hpp"
 #include "evade/conjunction/catalog.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/population.hpp"
@@ -48,7 +49,7 @@ struct Options {
   long seed = 1;
   int threads = 0;  // 0: hardware concurrency
   bool quiet = false;
-  CatalogScreenOptions catalog;  ///< --tle/--omm path
+  CatalogScreenOptions catalog;  ///< --tle/--omm path (its .cdm: --cdm-out, both paths)
 };
 
 std::string utc_of(double epoch_j2000_s, double t_s) {
@@ -208,6 +209,7 @@ int run_catalog(const Options& o) {
   c.threads = o.threads;
   c.json = o.common.json;
   c.quiet = o.quiet;
+  prepare_cdm_out(c.cdm, false);
   return run_screen_catalog(c);
 }
 
@@ -218,6 +220,9 @@ int run(const Options& o) {
   const Objects ob = load_objects(o, sc, in);
   if (o.method == "paper") sc.mark_used("robust");
   sc.check_all_used();
+  if (!o.catalog.cdm.dir.empty() && o.method != "robust")
+    throw std::invalid_argument("--cdm-out: only with --method robust (the paper method flags samples, not TCAs)");
+  prepare_cdm_out(o.catalog.cdm, true);
   const distributed::MpiSession mpi;  // one process unless started by mpirun
 
   nlohmann::json out;
@@ -237,6 +242,10 @@ int run(const Options& o) {
   out["wall_time_s"] = wall_s;
   out["events"] = events_json(events, ob.list, in.epoch_j2000_s);
   if (!o.csv_path.empty()) write_csv(o.csv_path, events, ob.list);
+  if (!o.catalog.cdm.dir.empty()) {
+    const CdmRunInfo run{in.epoch_j2000_s, in.span_s, in.robust.threshold_m, "objects " + ob.source};
+    out["cdm"] = write_population_cdms(o.catalog.cdm, run, events, ob.list, in.robust);
+  }
   if (o.common.json) {
     print_json(out);
   } else {
@@ -272,6 +281,7 @@ const bool kRegistered = register_command(
           ->capture_default_str();
       app.add_option("--step-s", c.step_s, "with --tle/--omm: grid step (s; 0 = automatic)");
       app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
+      add_cdm_out_options(app, c.cdm);
       return [o]() { return run(*o); };
     });
 

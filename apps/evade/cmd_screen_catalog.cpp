@@ -151,6 +151,9 @@ int run_screen_catalog(const CatalogScreenOptions& o) {
   j["motion_setup_wall_s"] = std::chrono::duration<double>(t1 - t0).count();
   j["screen_wall_s"] = std::chrono::duration<double>(t2 - t1).count();
   j["events"] = events_json(r, s);
+  if (!o.cdm.dir.empty())
+    j["cdm"] = write_catalog_cdms(o.cdm, {s.start_j2000_s, o.span_s, o.threshold_m, "catalog " + j["source"].get<std::string>()},
+                                  r, s, cat.objects, so);
   if (o.json) print_json(j);
   else print_text(j);
   return 0;

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "screen_cdm_out.hpp"
+
 namespace evade::cli {
 
 struct CatalogScreenOptions {
@@ -17,6 +19,7 @@ struct CatalogScreenOptions {
   int threads = 0;           ///< 0: hardware concurrency
   bool json = false;
   bool quiet = false;
+  CdmOutOptions cdm;         ///< --cdm-out DIR ...: one CDM per event
 };
 
 /// Reads the catalog, screens it with SGP4 motion and prints the events. Exit 0 when at

@@ -7,6 +7,7 @@
 
 #include "evade/assessment/covariance.hpp"
 #include "evade/assessment/covariance_propagation.hpp"
+#include "evade/dynamics/gravity.hpp"
 
 namespace evade::assessment {
 namespace {
@@ -26,7 +27,13 @@ void bring_to_tca(ConjunctionInput& in, const AssessConfig& cfg, Assessment& out
     const Vec3 r = in.obj[1].state.r_eci_m - in.obj[0].state.r_eci_m;
     const Vec3 v = in.obj[1].state.v_eci_mps - in.obj[0].state.v_eci_mps;
     if (!(v.squaredNorm() > 0.0)) throw std::invalid_argument("assess: relative speed is zero");
-    const double dt = -r.dot(v) / v.squaredNorm();
+    // f = r.v, f' = |v|^2 + r.(a2 - a1): the relative acceleration matters for slow pairs
+    // (without it Newton oscillates with a growing step when r.a > |v|^2).
+    const Vec3 a_rel =
+        orbit_derivative(in.obj[1].state.stacked(), GravityModel::kTwoBodyJ2, in.earth).tail<3>() -
+        orbit_derivative(in.obj[0].state.stacked(), GravityModel::kTwoBodyJ2, in.earth).tail<3>();
+    const double df = v.squaredNorm() + r.dot(a_rel);
+    const double dt = -r.dot(v) / (df > 0.0 ? df : v.squaredNorm());
     if (std::abs(dt) < 1e-6) {
       out.tca_shift_s = total;
       return;

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
 
 #include "evade/assessment/cdm_kvn.hpp"
 #include "evade/assessment/cdm_xml.hpp"
@@ -88,7 +90,12 @@ ConjunctionInput conjunction_from_cdm(const Cdm& cdm, double hbr_m, const EarthM
     }
     in.obj[i].name = cdm_value(cdm.object[i].metadata, "OBJECT_NAME");
     in.obj[i].state = cdm_state(cdm, i);
-    in.obj[i].cov_eci = cov_eci_from_rtn(cdm_cov_rtn(cdm, i), in.obj[i].state);
+    const Mat6 rtn = cdm_cov_rtn(cdm, i);
+    if (rtn.block<3, 3>(0, 0).isZero(0.0)) {  // how a CDM says "not known" (cdm_from_event.hpp)
+      throw std::invalid_argument("CDM: object " + std::to_string(i + 1) + " (" + in.obj[i].name +
+                                  "): the position covariance is all zero (not known): no Pc");
+    }
+    in.obj[i].cov_eci = cov_eci_from_rtn(rtn, in.obj[i].state);
     in.obj[i].has_velocity_cov = true;
   }
   return in;

@@ -4,7 +4,8 @@
 //
 // States not at TCA (r.v != 0) are brought to the local TCA by two-body + J2 propagation of
 // both objects (covariance_propagation.hpp): Newton iteration on the range rate,
-// dt = -(r.v)/|v|^2 with r, v re-propagated each step, until |dt| < 1 us, within
+// dt = -(r.v)/(|v|^2 + r.a_rel) (a_rel the two-body + J2 relative acceleration; |v|^2 alone
+// where that sum is not positive) with r, v re-propagated each step, until |dt| < 1 us, within
 // +- tca_search_s. 6x6 covariances are propagated to the new TCA with the J2 state
 // transition matrix; 3x3 position covariances cannot be (no velocity block) and are held
 // constant over the shift, which the result states.
