@@ -127,6 +127,8 @@ void prepare_cdm_out(const CdmOutOptions& o, bool objects_have_radii) {
     return;
   }
   (void)assumed_cov(o.cov_sigma);
+  if (o.hbr_m > 0.0 && o.cov_sigma.empty())
+    throw std::invalid_argument("--hbr-m: only with --cov-rtn-sigma-m (without a covariance there is no Pc)");
   if (!o.cov_sigma.empty() && !objects_have_radii && !(o.hbr_m > 0.0))
     throw std::invalid_argument("--cov-rtn-sigma-m: catalog objects carry no size: give --hbr-m");
   std::error_code ec;
