@@ -76,6 +76,7 @@ struct NarrowPair {
   double rc = 0.0;       // collision radius R_c (eq. 1)
   double p_sum = 0.0;    // eps_i + eps_j: motion's departure from the field (0 without)
   double p_rate_sum = 0.0;  // bound on the rate of that departure
+  double v_err_sum = 0.0;   // bound on the error of the relative velocity (motion sources)
 };
 
 NarrowPair narrow_pair(std::size_t i, std::size_t j, double d_ij, const PairContext& ctx) {
@@ -91,6 +92,7 @@ NarrowPair narrow_pair(std::size_t i, std::size_t j, double d_ij, const PairCont
   p.rc = collision_radius_m((*ctx.objects)[i], (*ctx.objects)[j]);
   p.p_sum = bi.perturbation_mps2 + bj.perturbation_mps2;
   p.p_rate_sum = bi.perturbation_rate_mps3 + bj.perturbation_rate_mps3;
+  if (ctx.opt->motion) p.v_err_sum = ctx.opt->motion->velocity_error_mps(i) + ctx.opt->motion->velocity_error_mps(j);
   return p;
 }
 
@@ -150,6 +152,31 @@ struct Monotonicity {
   bool decreasing = false;
 };
 
+// rho.rho'' at one end of an interval, within +- error: exact from the field for the force
+// models; for a motion source, from its accelerations (acceleration_at) when it gives them,
+// else the field within |rho| (eps_i + eps_j).
+struct EndCurvature {
+  double value = 0.0;
+  double error = 0.0;
+};
+
+EndCurvature end_curvature(const Endpoint& e, const Vec3& rho, const NarrowPair& p,
+                           const ScreenOptions& opt) {
+  EndCurvature c;
+  Vec3 ai, aj;
+  double ei = 0.0, ej = 0.0;
+  if (opt.motion && opt.motion->acceleration_at(p.i, e.t, ai, ei) &&
+      opt.motion->acceleration_at(p.j, e.t, aj, ej)) {
+    c.value = rho.dot(aj - ai);
+    c.error = rho.norm() * (ei + ej);
+    return c;
+  }
+  auto accel = [&](const Vec3& r) { return accel_eci_mps2(r, opt.gravity, opt.earth); };
+  c.value = rho.dot(accel(e.sj.r_eci_m) - accel(e.si.r_eci_m));
+  c.error = rho.norm() * p.p_sum;
+  return c;
+}
+
 Monotonicity range_rate_monotonicity(const Endpoint& a, const Endpoint& b,
                                      const IntervalGeometry& g, const NarrowPair& p,
                                      const ScreenOptions& opt) {
@@ -158,7 +185,7 @@ Monotonicity range_rate_monotonicity(const Endpoint& a, const Endpoint& b,
   const double r_max = g.r_max;
   Monotonicity m;
   // Test 1 (fast pairs): f' >= V_min^2 - R_max A > 0.
-  const double v_min = 0.5 * (g.vel_a.norm() + g.vel_b.norm() - acc * len);
+  const double v_min = 0.5 * (g.vel_a.norm() + g.vel_b.norm() - acc * len) - p.v_err_sum;
   m.monotone = v_min > 0.0 && v_min * v_min > r_max * acc;
   if (m.monotone || !(g.r_seg > 0.0)) return m;
   // Test 2 (slow pairs): f' = |rho'|^2 + rho.rho'' known at both ends, and
@@ -168,14 +195,16 @@ Monotonicity range_rate_monotonicity(const Endpoint& a, const Endpoint& b,
   const double l_third = gravity_hessian_bound(r_seg, opt.gravity, opt.earth);
   const double k_grad = gravity_gradient_bound_ps2(r_seg, opt.gravity, opt.earth);
   const double v_obj = p.v_obj;
-  const double v_rel_max = std::min(g.vel_a.norm(), g.vel_b.norm()) + acc * len;
+  const double v_rel_max = std::min(g.vel_a.norm(), g.vel_b.norm()) + acc * len + p.v_err_sum;
   const double b_f2 = 3.0 * v_rel_max * acc +
                       r_max * (k_grad * v_rel_max + l_third * r_max * v_obj + p.p_rate_sum);
-  auto accel = [&](const Vec3& r) { return accel_eci_mps2(r, opt.gravity, opt.earth); };
-  const double dfa = g.vel_a.squaredNorm() + g.rho_a.dot(accel(a.sj.r_eci_m) - accel(a.si.r_eci_m));
-  const double dfb = g.vel_b.squaredNorm() + g.rho_b.dot(accel(b.sj.r_eci_m) - accel(b.si.r_eci_m));
-  // rho.rho'' is known to within |rho| (eps_i + eps_j) at each end (motion sources).
-  const double slack = b_f2 * len + (g.rho_a.norm() + g.rho_b.norm()) * p.p_sum;
+  const EndCurvature ca = end_curvature(a, g.rho_a, p, opt), cb = end_curvature(b, g.rho_b, p, opt);
+  const double dfa = g.vel_a.squaredNorm() + ca.value;
+  const double dfb = g.vel_b.squaredNorm() + cb.value;
+  // |rho'|^2 from a velocity known to within dv: +- (2 |v| dv + dv^2) at each end.
+  const double dv = p.v_err_sum;
+  const double v_slack = (2.0 * (g.vel_a.norm() + g.vel_b.norm()) + 2.0 * dv) * dv;
+  const double slack = b_f2 * len + ca.error + cb.error + v_slack;
   // On [a, b]: f'(t) >= max(f'(a) - B (t-a), f'(b) - B (b-t)) >= (f'(a) + f'(b) - B len)/2
   // and f'(t) <= (f'(a) + f'(b) + B len)/2.
   m.monotone = dfa + dfb - slack > 0.0;

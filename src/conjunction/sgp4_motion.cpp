@@ -143,6 +143,21 @@ StateEci Sgp4Motion::state_at(std::size_t i, double t_s) const {
   return StateEci{b.r, (c.r - a.r) / (2.0 * tau)};
 }
 
+bool Sgp4Motion::acceleration_at(std::size_t i, double t_s, Vec3& a_mps2, double& error_mps2) const {
+  const double h = accel_step_s_, t = offset_s_[i] + t_s;
+  Position q[5];
+  for (int m = 0; m < 5; ++m) {
+    q[m] = position(props_[i], t + (m - 2) * h);
+    if (!q[m].ok) return false;  // the caller falls back to the envelope
+  }
+  a_mps2 = (-q[0].r + 16.0 * q[1].r - 30.0 * q[2].r + 16.0 * q[3].r - q[4].r) / (12.0 * h * h);
+  const double r = q[2].r.norm(), n2 = n_max_radps_[i] * n_max_radps_[i];
+  const double truncation = 4.0 * n2 * n2 * n2 * r * h * h * h * h / 90.0;
+  const double jumps = 34.0 / 12.0 * 4e-12 * r / (h * h);
+  error_mps2 = truncation + jumps;
+  return true;
+}
+
 // Builds Sgp4Motion (a friend, so the motion's vectors stay private).
 struct Sgp4CatalogBuilder {
   static Sgp4Screening build(const std::vector<sgp4::MeanElements>& elements,
@@ -197,6 +212,11 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   b.rate_mps3 = 4.0 * n_max * b.accel_mps2;
   mo.bounds_.push_back(b);
   mo.sampled_.push_back(env.p_max_mps2);
+  mo.n_max_radps_.push_back(n_max);
+  // Largest radius: the mean semi-major axis from n (Kepler's third law) times (1 + e), +10 %.
+  const double a_m = std::cbrt(earth.mu_m3ps2 / (n_radps * n_radps));
+  const double r_max = 1.1 * a_m * (1.0 + e), tau = opt.velocity_step_s;
+  mo.v_err_mps_.push_back(tau * tau * n_max * n_max * n_max * r_max / 3.0 + 4e-12 * r_max / tau);
   return {};
 }
 
@@ -213,6 +233,7 @@ Sgp4Screening Sgp4CatalogBuilder::build(const std::vector<sgp4::MeanElements>& e
   }
   auto motion = std::make_shared<Sgp4Motion>();
   motion->velocity_step_s_ = opt.velocity_step_s;
+  motion->accel_step_s_ = opt.accel_step_s;
   for (const auto& m : elements) {
     SpaceObject obj;
     const std::string why = accept(*motion, m, out.start_j2000_s, opt, obj);

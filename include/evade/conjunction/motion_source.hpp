@@ -7,7 +7,8 @@
 // screened span, with p_i(t) = r_i''(t) - a(r_i(t)),
 //   |p_i(t)| <= accel_mps2   and   |p_i'(t)| <= rate_mps3.
 // The velocity a source returns must be the time derivative of the position it returns
-// (the screener's range rate is rho . rho'), not some other velocity.
+// (the screener's range rate is rho . rho'), not some other velocity, to within
+// velocity_error_mps().
 #pragma once
 
 #include <cstddef>
@@ -35,6 +36,19 @@ class MotionSource {
   virtual StateEci state_at(std::size_t i, double t_s) const = 0;
   /// The bound on the departure from two-body + J2 of reference_earth() over the span.
   virtual PerturbationBound perturbation(std::size_t i) const = 0;
+  /// r''(t_s) of object i in a_mps2 and a bound on that value's error in error_mps2, when
+  /// the source can give it more tightly than a(r) +- perturbation(i).accel_mps2; false
+  /// when it cannot (the default). Thread-safe.
+  virtual bool acceleration_at(std::size_t i, double t_s, Vec3& a_mps2, double& error_mps2) const {
+    (void)i, (void)t_s, (void)a_mps2, (void)error_mps2;
+    return false;
+  }
+  /// A bound on |v - r'| for the velocity state_at returns (0: exact). The screener widens
+  /// its range-rate tests by it.
+  virtual double velocity_error_mps(std::size_t i) const {
+    (void)i;
+    return 0.0;
+  }
   /// The Earth model the perturbation is measured against; the screener must use it.
   virtual EarthModel reference_earth() const = 0;
   /// The frame of the states ("TEME", "J2000"), for reports.
