@@ -89,12 +89,12 @@ TEST(Sgp4Screening, VelocityIsTheDerivativeOfThePosition) {
 }
 
 // The envelope (factor 2 over 64 samples per orbit) holds at 2 s sampling of every object
-// over 3 h
+// over 2 h
 // (same five-point difference; the rate from differences 60 s apart, where the position's
 // jumps add < 3e-8 m/s^3).
 TEST(Sgp4Screening, PerturbationEnvelopeHoldsOnFineSampling) {
   Sgp4MotionOptions mo;
-  mo.span_s = 10800.0;
+  mo.span_s = 7200.0;
   const Sgp4Screening s = sgp4_screening(sgp4_test_catalog(small_catalog(5)), mo);
   const EarthModel e = wgs72_earth();
   double worst_ratio = 0.0, worst_rate_ratio = 0.0;
