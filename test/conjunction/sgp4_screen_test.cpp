@@ -95,7 +95,9 @@ TEST(Sgp4Screening, VelocityIsTheDerivativeOfThePosition) {
 TEST(Sgp4Screening, PerturbationEnvelopeHoldsOnFineSampling) {
   Sgp4MotionOptions mo;
   mo.span_s = 7200.0;
-  const Sgp4Screening s = sgp4_screening(sgp4_test_catalog(small_catalog(5)), mo);
+  Sgp4TestCatalogOptions co = small_catalog(5);
+  co.background = 20;  // with the 12 pair objects: 32 objects (time under ASan)
+  const Sgp4Screening s = sgp4_screening(sgp4_test_catalog(co), mo);
   const EarthModel e = wgs72_earth();
   double worst_ratio = 0.0, worst_rate_ratio = 0.0;
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
@@ -118,7 +120,7 @@ TEST(Sgp4Screening, PerturbationEnvelopeHoldsOnFineSampling) {
 
 TEST(Sgp4Screening, PrimaryGivesExactlyThePrimarysEventsOfTheFullScreening) {
   Sgp4MotionOptions mo;
-  mo.span_s = 43200.0;
+  mo.span_s = 21600.0;
   const Sgp4Screening s = sgp4_screening(sgp4_test_catalog(small_catalog(6)), mo);
   ScreenOptions opt = sgp4_options(s);
   const ScreenResult all = screen_robust(s.objects, mo.span_s, opt);
@@ -137,7 +139,7 @@ TEST(Sgp4Screening, PrimaryGivesExactlyThePrimarysEventsOfTheFullScreening) {
     EXPECT_TRUE(found) << e.i << "-" << e.j << " at " << e.tca_s;
   }
   EXPECT_EQ(one.events.size(), expected);
-  EXPECT_GT(expected, 5u) << "the co-orbital partner should pass within 5 km several times";
+  EXPECT_GE(expected, 3u) << "the co-orbital partner should pass within 5 km several times in 6 h";
   opt.primary = static_cast<long>(s.objects.size());
   EXPECT_THROW(screen_robust(s.objects, mo.span_s, opt), std::invalid_argument);
 }
