@@ -10,6 +10,15 @@ if(EVADE_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
+# The fuzz configuration: every module and harness instrumented for libFuzzer's coverage
+# feedback and checked by ASan+UBSan (any UB aborts, so libFuzzer keeps the input); the
+# harness executables add -fsanitize=fuzzer (libFuzzer's main) at link time.
+if(EVADE_FUZZ)
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+                      -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
 function(evade_add_module)
   cmake_parse_arguments(M "NO_INSTALL" "NAME" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
   set(t evade_${M_NAME})

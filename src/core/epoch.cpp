@@ -9,8 +9,6 @@
 namespace evade {
 namespace {
 
-constexpr double kJdJ2000 = 2451545.0;
-
 int days_in_month(int year, int month) {
   static constexpr int kDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
   const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
