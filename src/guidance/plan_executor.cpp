@@ -32,6 +32,18 @@ Vec3 dv_of(const UplinkedPlan& p, int i) noexcept {
   return p.frame == PlanFrame::kEci ? b.dv_eci_mps : b.dv_rsw_mps;
 }
 
+// Whole cycles of a burn of |Δv| = mag at the thrust limit (at least one), as a double: a
+// finite but huge Δv (1e300 m/s) has no int cycle count, so check_burns compares this with
+// the burn-time limit before burn_of converts it.
+double burn_cycles(const PlanExecutorConfig& c, double mag) noexcept {
+  const double n = std::ceil(mag / (c.max_accel_mps2 * c.cycle_s) * (1.0 - 1e-12));
+  return n < 1.0 ? 1.0 : n;
+}
+
+// Plan epochs beyond ±1e18 µs (±31,700 years) are refused with the times beyond the exact µs
+// range: burn times, windows and cycle times stay far from int64 overflow.
+constexpr std::int64_t kMaxEpochAbsUs = 1000000000000000000;
+
 // RSW → ECI rotation of the own orbit (columns R, S, W); false if nav cannot define it.
 bool rsw_to_eci(const NavState& nav, Mat3* m) noexcept {
   if (!nav.valid || !nav.r_eci_m.allFinite() || !nav.v_eci_mps.allFinite()) return false;
@@ -96,10 +108,8 @@ PlanExecutor::PlanExecutor(const PlanExecutorConfig& cfg) noexcept
 PlanExecutor::Burn PlanExecutor::burn_of(const UplinkedPlan& p, int i) const noexcept {
   const Vec3 dv = dv_of(p, i);
   const double mag = dv.norm();
-  const double per_cycle = cfg_.max_accel_mps2 * cfg_.cycle_s;
   Burn b;
-  b.cycles = static_cast<int>(std::ceil(mag / per_cycle * (1.0 - 1e-12)));
-  if (b.cycles < 1) b.cycles = 1;
+  b.cycles = static_cast<int>(burn_cycles(cfg_, mag));  // check_burns bounded it
   b.accel_mps2 = mag / (b.cycles * cfg_.cycle_s);
   b.dir = mag > 0.0 ? Vec3(dv / mag) : Vec3::Zero();
   const double t_us = p.plan.impulses[static_cast<std::size_t>(i)].t_s * 1e6;
@@ -110,11 +120,14 @@ PlanExecutor::Burn PlanExecutor::burn_of(const UplinkedPlan& p, int i) const noe
 
 // Timing and limits of the burns (the plan is finite, in a known frame, 1..8 impulses).
 PlanReject PlanExecutor::check_burns(const UplinkedPlan& p, std::int64_t now_us) const noexcept {
+  if (p.epoch_utime_us > kMaxEpochAbsUs || p.epoch_utime_us < -kMaxEpochAbsUs)
+    return PlanReject::kNotFinite;
   for (int i = 0; i < p.plan.n_impulses; ++i) {
     const double t_s = p.plan.impulses[static_cast<std::size_t>(i)].t_s;
     if (std::abs(t_s) > 1e9) return PlanReject::kNotFinite;  // beyond the exact µs range
+    if (!(burn_cycles(cfg_, dv_of(p, i).norm()) * cfg_.cycle_s <= cfg_.max_burn_s))
+      return PlanReject::kOverThrustLimit;
     const Burn b = burn_of(p, i);
-    if (b.cycles * cfg_.cycle_s > cfg_.max_burn_s) return PlanReject::kOverThrustLimit;
     if (b.first_cycle_us <= now_us) return PlanReject::kBurnInPast;
     if (i > 0) {
       if (!(t_s > p.plan.impulses[static_cast<std::size_t>(i - 1)].t_s))

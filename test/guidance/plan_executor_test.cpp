@@ -85,6 +85,15 @@ TEST(PlanExecutor, EachRejectionReasonIsNamedAndCounted) {
          p->plan.impulses[1].dv_rsw_mps = Vec3(0.0, 0.0, 700.0);
        },
        true},
+      // Found by fuzzing (docs/ASSURANCE.md): a finite but huge Δv has no int cycle count
+      // (the conversion was undefined behaviour); it is over the burn-time limit.
+      {PlanReject::kOverThrustLimit,
+       [](UplinkedPlan* p) { p->plan.impulses[0].dv_rsw_mps = Vec3(1e300, 0.0, 0.0); }, true},
+      // Found while fixing the finding above: an epoch near the int64 limit overflowed the
+      // burn's start cycle (signed overflow).
+      {PlanReject::kNotFinite,
+       [](UplinkedPlan* p) { p->epoch_utime_us = std::numeric_limits<std::int64_t>::max() - 5; },
+       true},
       {PlanReject::kDisarmed, [](UplinkedPlan*) {}, false},
   };
   for (const Case& c : cases) {
