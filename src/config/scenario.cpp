@@ -89,6 +89,55 @@ void collect_leaves(const json& n, const std::string& prefix, std::vector<std::s
   }
 }
 
+// Lead bytes of well-formed UTF-8 (RFC 3629 sec. 4, Unicode table 3-7: no overlong forms,
+// no surrogates, nothing above U+10FFFF): range, sequence length, range of the second byte.
+struct Utf8Lead {
+  unsigned char first, last;
+  std::size_t length;
+  unsigned char lo, hi;
+};
+constexpr Utf8Lead kUtf8Leads[] = {
+    {0xC2, 0xDF, 2, 0x80, 0xBF}, {0xE0, 0xE0, 3, 0xA0, 0xBF}, {0xE1, 0xEC, 3, 0x80, 0xBF},
+    {0xED, 0xED, 3, 0x80, 0x9F}, {0xEE, 0xEF, 3, 0x80, 0xBF}, {0xF0, 0xF0, 4, 0x90, 0xBF},
+    {0xF1, 0xF3, 4, 0x80, 0xBF}, {0xF4, 0xF4, 4, 0x80, 0x8F}};
+
+// Length of the well-formed UTF-8 sequence at s[i], or 0 when it is not one.
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  if (b(i) < 0x80) return 1;
+  for (const Utf8Lead& l : kUtf8Leads) {
+    if (b(i) < l.first || b(i) > l.last) continue;
+    if (i + l.length > s.size() || b(i + 1) < l.lo || b(i + 1) > l.hi) return 0;
+    for (std::size_t k = 2; k < l.length; ++k)
+      if (b(i + k) < 0x80 || b(i + k) > 0xBF) return 0;
+    return l.length;
+  }
+  return 0;
+}
+
+// Scenario text is UTF-8 (YAML 1.2 sec. 5.2); anything else is refused here, naming the
+// line, the column and the byte, before it can reach a key, a value or a JSON result
+// (JSON output cannot carry it). Found by fuzzing (docs/ASSURANCE.md).
+void require_utf8(const std::string& text, const std::string& where) {
+  int line = 1, col = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_length(text, i);
+    if (n == 0) {
+      char byte[8];
+      std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[i]));
+      throw ConfigError(where + ": line " + std::to_string(line) + ", column " +
+                        std::to_string(col) + ": not UTF-8 text (byte " + byte + ")");
+    }
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+    i += n;
+  }
+}
+
 // Shortest of %.15g / %.17g that reads back as the same double.
 std::string fmt(double v) {
   char buf[32];
@@ -119,6 +168,7 @@ Scenario::Scenario(json tree, std::string source) : tree_(std::move(tree)), sour
 Scenario Scenario::empty(const std::string& source_name) { return Scenario(json::object(), source_name); }
 
 Scenario Scenario::from_yaml_string(const std::string& yaml, const std::string& source_name) {
+  require_utf8(yaml, source_name);
   try {
     return Scenario(to_json(YAML::Load(yaml), source_name), source_name);
   } catch (const YAML::Exception& e) {
@@ -154,6 +204,7 @@ Scenario Scenario::load(const std::string& name_or_path) {
 }
 
 void Scenario::apply_override(const std::string& assignment) {
+  require_utf8(assignment, "--set");
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw ConfigError("--set '" + assignment + "': expected key.path=value");

@@ -57,6 +57,26 @@ TEST(Scenario, RejectsNanInfAndNonNumbers) {
   }
 }
 
+// Found by fuzzing (docs/ASSURANCE.md): a byte that is not UTF-8 reached a value, and the
+// error text built from it threw nlohmann::json's type_error instead of a ConfigError. The
+// text is now refused on reading, naming the line, the column and the byte; valid UTF-8
+// (2-, 3- and 4-byte forms) still reads.
+TEST(Scenario, TextThatIsNotUtf8IsAConfigErrorNamingTheByte) {
+  const std::string file_msg =
+      error_of([] { Scenario::from_yaml_string("a: 1\nb: [7\xCF\xCF, 0]\n", "f.yaml"); });
+  EXPECT_NE(file_msg.find("f.yaml: line 2, column 6: not UTF-8 text (byte 0xCF)"),
+            std::string::npos) << file_msg;
+  for (const char* bad : {"k=\xC0\xAF", "k=\xED\xA0\x80", "k=\xF4\x90\x80\x80", "k=\xE2\x82"}) {
+    Scenario s = Scenario::from_yaml_string(kDoc, "doc");
+    const std::string msg = error_of([&] { s.apply_override(bad); });
+    EXPECT_NE(msg.find("--set: line 1, column 3: not UTF-8 text"), std::string::npos) << msg;
+  }
+  Scenario s = Scenario::from_yaml_string("name: \"caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9B\xB0\"\n", "u.yaml");
+  EXPECT_EQ(s.get_string("name"), "caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x9B\xB0");
+  s.apply_override("name=\xC3\xA9t\xC3\xA9");
+  EXPECT_EQ(s.get_string("name"), "\xC3\xA9t\xC3\xA9");
+}
+
 TEST(Scenario, UnknownKeyIsReportedWithTheAllowedKeys) {
   Scenario s = Scenario::from_yaml_string(kDoc, "doc");
   s.apply_override("sensor.noise=1e-4");  // missing unit suffix
