@@ -48,7 +48,7 @@ Reason validate(const evade_nav_state_t& m) noexcept {
 Reason validate(const evade_arm_t&) noexcept { return Reason::kOk; }
 
 Reason validate(const evade_sim_clock_t& m) noexcept {
-  return m.utime >= 0 ? Reason::kOk : Reason::kOutOfRange;
+  return m.utime >= 0 && m.utime <= Limits::kMaxTickUtimeUs ? Reason::kOk : Reason::kOutOfRange;
 }
 
 Reason validate(const evade_thrust_cmd_t& m) noexcept {

@@ -97,6 +97,23 @@ TEST(Validate, CommandUnitVectorMustBeUnitWhenThrusting) {
   EXPECT_EQ(validate(c), Reason::kOutOfRange);
 }
 
+// A lockstep tick's utime becomes the cycle time; the node adds its tolerances to it. A
+// tick at INT64_MAX overflowed that sum (found with the lcm_sim_clock fuzz harness,
+// docs/ASSURANCE.md): ticks are accepted only in [0, Limits::kMaxTickUtimeUs].
+TEST(Validate, SimClockTickUtimeWithinZeroAndTheLimit) {
+  evade_sim_clock_t t{};
+  t.seq = 1;
+  for (const std::int64_t ok : {std::int64_t{0}, std::int64_t{1000000}, Limits::kMaxTickUtimeUs}) {
+    t.utime = ok;
+    EXPECT_EQ(validate(t), Reason::kOk) << ok;
+  }
+  for (const std::int64_t bad : {std::int64_t{-1}, Limits::kMaxTickUtimeUs + 1,
+                                 std::numeric_limits<std::int64_t>::max()}) {
+    t.utime = bad;
+    EXPECT_EQ(validate(t), Reason::kOutOfRange) << bad;
+  }
+}
+
 TEST(Convert, AnglesAndNavRoundTripBitExact) {
   guidance::AnglesMeasurement m;
   m.utime_us = 123456789;

@@ -3,6 +3,8 @@
 // the length, so every numeric field is checked here before anything reaches the law.
 #pragma once
 
+#include <cstdint>
+
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_arm_t.hpp"
 #include "evade/evade_nav_state_t.hpp"
@@ -19,6 +21,10 @@ struct Limits {
   static constexpr double kMaxVelocityMps = 1.0e5;
   static constexpr double kUnitTolerance = 1e-6;                  // | |u| - 1 |
   static constexpr double kMaxAccelMps2 = 1.0e3;
+  /// Latest sim-clock tick utime [µs] (31,700 years after 1970): a lockstep cycle's time
+  /// plus or minus the node's tolerances stays far inside int64 (found by fuzzing a tick at
+  /// INT64_MAX: the future-utime check overflowed).
+  static constexpr std::int64_t kMaxTickUtimeUs = 1000000000000000000;
 };
 
 /// Each returns Reason::kOk or why the message must be rejected. No allocation, no throw.
