@@ -62,6 +62,20 @@ Catalog read_gp_json(const std::string& text, const std::string& source) {
                           text.substr(std::min(at, text.size()), 12)});
     ++cat.bad_entries;
     return cat;
+  } catch (const nlohmann::json::exception& e) {
+    // Well-formed text the parser still refuses: a number beyond double (out_of_range.406,
+    // "number overflow parsing '1e999'"; found by fuzzing, docs/ASSURANCE.md). The message
+    // quotes the number; its first occurrence in the text gives the line and column.
+    const std::string what = e.what();
+    const std::size_t q0 = what.find('\'');
+    const std::size_t q1 = what.rfind('\'');
+    const std::string token = q0 < q1 ? what.substr(q0 + 1, q1 - q0 - 1) : std::string();
+    const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+    const Pos p = position_of(text, at == std::string::npos ? 0 : at);
+    cat.issues.push_back({source, p.line, p.column, "numbers within the range of a double (" + what + ")",
+                          token.empty() ? text.substr(0, 12) : token.substr(0, 24)});
+    ++cat.bad_entries;
+    return cat;
   }
   const std::vector<std::size_t> offsets = object_offsets(text);
   const nlohmann::json items = doc.is_array() ? doc : nlohmann::json::array({doc});

@@ -162,6 +162,22 @@ TEST(OmmReaders, BadValuesAreRejectedWithLineAndKeyword) {
   EXPECT_EQ(v.issues[0].column, 5);
 }
 
+// Found by fuzzing (docs/ASSURANCE.md): a JSON number beyond double made the JSON parser
+// throw out_of_range (not a parse error), which escaped read_gp_json. It is now one issue
+// naming the number's line and column, like any other malformed JSON.
+TEST(OmmReaders, JsonNumberBeyondDoubleIsAnIssueNotAnException) {
+  const std::string json = "[{\"OBJECT_NAME\":\"X\",\n \"MEAN_MOTION\":1e999}]";
+  Catalog c;
+  ASSERT_NO_THROW(c = read_gp_json(json, "big.json"));
+  EXPECT_TRUE(c.objects.empty());
+  ASSERT_EQ(c.issues.size(), 1u);
+  EXPECT_EQ(c.bad_entries, 1);
+  EXPECT_EQ(c.issues[0].line, 2);
+  EXPECT_EQ(c.issues[0].column, 16);
+  EXPECT_EQ(c.issues[0].found, "1e999");
+  EXPECT_NE(c.issues[0].expected.find("within the range of a double"), std::string::npos);
+}
+
 TEST(Sgp4, OmmAndTleOfTheSameSetPropagateAlike) {
   // Vanguard 1 as a TLE (the package's sample): same state as the OMM to the rounding of
   // the epoch (the OMM gives microseconds, the TLE 1e-8 day = 0.86 ms).
