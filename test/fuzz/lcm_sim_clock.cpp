@@ -20,12 +20,12 @@ int run(const std::uint8_t* data, std::size_t size) {
                      evade::fuzz::kTailCycles;
   evade::guidance_lcm::NodeConfig cfg;
   cfg.lockstep = true;
-  evade::guidance_lcm::test::Rig dut(cfg, 4);
+  evade::fuzz::FuzzRig dut(0, cfg);
   std::int64_t plausible_ticks = 0;  // decode exactly and validate (seq not checked here)
   int next = 0;
   for (int k = 0; k < rounds; ++k) {
     const std::int64_t t = 1000000 + k * evade::guidance_lcm::test::kPeriodUs;
-    dut.send_good(t, k + 1);
+    dut.send_good(t, k + 1, true);
     for (; next < n_rec && rec[next].cycle == k; ++next) {
       evade::evade_sim_clock_t tick{};
       const int n = tick.decode(rec[next].bytes, 0, static_cast<int>(rec[next].size));
@@ -33,7 +33,7 @@ int run(const std::uint8_t* data, std::size_t size) {
           evade::guidance_lcm::validate(tick) == evade::guidance_lcm::Reason::kOk)
         ++plausible_ticks;
       // Not Publisher::send_bytes: ticks are not input messages (published() counts those).
-      lcm_publish(dut.lcm.get(), evade::guidance_lcm::kChanClock, rec[next].bytes,
+      lcm_publish(dut.lcm, evade::guidance_lcm::kChanClock, rec[next].bytes,
                   rec[next].size);
     }
     dut.node.drain();
