@@ -6,6 +6,9 @@
 #include "evade/conjunction/robust_screen.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <exception>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -98,7 +101,8 @@ NarrowPair narrow_pair(std::size_t i, std::size_t j, double d_ij, const PairCont
 
 // States of the pair at any time of the grid step, from the grid states gi, gj at t_grid.
 struct PairEphemeris {
-  Ephemeris* eph = nullptr;
+  const Ephemeris* eph = nullptr;
+  StepArcs* arcs = nullptr;
   std::size_t i = 0;
   std::size_t j = 1;
   const StateEci* gi = nullptr;
@@ -108,8 +112,8 @@ struct PairEphemeris {
   Endpoint at(double t) const {
     Endpoint e;
     e.t = t;
-    e.si = eph->state_near(i, t, *gi, t_grid);
-    e.sj = eph->state_near(j, t, *gj, t_grid);
+    e.si = eph->state_near(*arcs, i, t, *gi, t_grid);
+    e.sj = eph->state_near(*arcs, j, t, *gj, t_grid);
     return e;
   }
 };
@@ -241,11 +245,11 @@ void record_closest_approach(const Endpoint& a, const Endpoint& b, double fa, do
 // robust_screen.hpp). Returns events through `out`.
 void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const Endpoint& end,
                   const StateEci& gi, const StateEci& gj, double t_grid, double d_ij,
-                  const PairContext& ctx, Ephemeris& eph, std::vector<Conjunction>& out,
-                  ScreenStats& st) {
+                  const PairContext& ctx, const Ephemeris& eph, StepArcs& arcs,
+                  std::vector<Conjunction>& out, ScreenStats& st) {
   const ScreenOptions& opt = *ctx.opt;
   const NarrowPair p = narrow_pair(i, j, d_ij, ctx);
-  const PairEphemeris pe{&eph, i, j, &gi, &gj, t_grid};
+  const PairEphemeris pe{&eph, &arcs, i, j, &gi, &gj, t_grid};
   std::vector<std::pair<Endpoint, Endpoint>> stack;
   stack.emplace_back(start, end);
   while (!stack.empty()) {
@@ -320,20 +324,6 @@ void add_stats(ScreenStats& into, const ScreenStats& s) {
   into.unproven_leaves += s.unproven_leaves;
 }
 
-constexpr std::int64_t kCellOffset = 1 << 20;
-constexpr std::int64_t kCellMax = (1 << 21) - 1;
-
-std::int64_t cell_index(double x, double cell_m) {
-  const double q = std::floor(x / cell_m);
-  return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::clamp(q, -4e6, 4e6)) + kCellOffset,
-                                  0, kCellMax);
-}
-
-std::uint64_t cell_key(std::int64_t ix, std::int64_t iy, std::int64_t iz) {
-  return (static_cast<std::uint64_t>(ix) << 42) | (static_cast<std::uint64_t>(iy) << 21) |
-         static_cast<std::uint64_t>(iz);
-}
-
 double max_reporting_distance_m(const std::vector<SpaceObject>& objects, const ScreenOptions& opt) {
   double d_max = opt.threshold_m;
   if (opt.include_warning_radius) {
@@ -344,123 +334,335 @@ double max_reporting_distance_m(const std::vector<SpaceObject>& objects, const S
   return d_max;
 }
 
-// One worker screens the grid steps [k_begin, k_end). Under J2 its ephemeris first visits
-// every grid time before k_begin, so the integrator's steps (and therefore every state and
-// event) do not depend on how the steps are split between threads or processes.
+// Cell of coordinate x in a uniform grid of cell size cell_m (the same cells at every step:
+// floor(x / cell), clamped).
+std::int64_t cell_index(double x, double cell_m) {
+  return static_cast<std::int64_t>(std::clamp(std::floor(x / cell_m), -4e6, 4e6));
+}
+
+// Stable LSD radix sort of (cell key << 32 | object) by the key's low `key_bits` bits; the
+// entries come in object order, so each cell's objects stay in increasing order (the order
+// std::sort of the (key, object) pairs gives).
+void radix_sort_by_key(std::vector<std::uint64_t>& v, std::vector<std::uint64_t>& tmp,
+                       int key_bits) {
+  constexpr int kDigit = 11;
+  constexpr std::size_t kBuckets = std::size_t{1} << kDigit;
+  tmp.resize(v.size());
+  std::vector<std::uint32_t> count(kBuckets);
+  for (int shift = 32; shift < 32 + key_bits; shift += kDigit) {
+    std::fill(count.begin(), count.end(), 0u);
+    for (std::uint64_t e : v) ++count[(e >> shift) & (kBuckets - 1)];
+    std::uint32_t sum = 0;
+    for (std::uint32_t& c : count) {
+      const std::uint32_t n = c;
+      c = sum;
+      sum += n;
+    }
+    for (std::uint64_t e : v) tmp[count[(e >> shift) & (kBuckets - 1)]++] = e;
+    v.swap(tmp);
+  }
+}
+
+// The swept boxes of one grid step in a uniform grid of cells as large as the largest box
+// (each box touches at most 2 cells per axis): for each object its box and its lowest cell,
+// and the (cell, object) entries sorted by cell.
+// One object's box and lowest cell (relative to the origin), in one cache line.
+struct alignas(64) GridBox {
+  double lo[3];
+  double hi[3];
+  std::int32_t cell[3];
+};
+
+struct BoxGrid {
+  double cell_m = 0.0;
+  std::int64_t origin[3] = {0, 0, 0};  // lowest cell on each axis
+  std::int64_t extent[3] = {1, 1, 1};  // cells on each axis
+  std::vector<Vec3> lo, hi;
+  std::vector<GridBox> box;
+  std::vector<std::uint64_t> entries, scratch;
+
+  std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    return static_cast<std::uint64_t>((x * extent[1] + y) * extent[2] + z);
+  }
+
+  void build(std::size_t n) {
+    double cell = 0.0;
+    Vec3 lo_min = lo[0], hi_max = hi[0];
+    for (std::size_t i = 0; i < n; ++i) {
+      cell = std::max(cell, (hi[i] - lo[i]).maxCoeff());
+      lo_min = lo_min.cwiseMin(lo[i]);
+      hi_max = hi_max.cwiseMax(hi[i]);
+    }
+    cell_m = cell;
+    for (int a = 0; a < 3; ++a) {
+      origin[a] = cell_index(lo_min[a], cell);
+      extent[a] = cell_index(hi_max[a], cell) - origin[a] + 1;
+    }
+    box.resize(n);
+    entries.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      std::int64_t c0[3], c1[3];
+      GridBox& b = box[i];
+      for (int a = 0; a < 3; ++a) {
+        c0[a] = cell_index(lo[i][a], cell) - origin[a];
+        c1[a] = cell_index(hi[i][a], cell) - origin[a];
+        b.lo[a] = lo[i][a];
+        b.hi[a] = hi[i][a];
+        b.cell[a] = static_cast<std::int32_t>(c0[a]);
+      }
+      for (std::int64_t x = c0[0]; x <= c1[0]; ++x)
+        for (std::int64_t y = c0[1]; y <= c1[1]; ++y)
+          for (std::int64_t z = c0[2]; z <= c1[2]; ++z)
+            entries.push_back(key(x, y, z) << 32 | static_cast<std::uint64_t>(i));
+    }
+    const std::uint64_t max_key = key(extent[0] - 1, extent[1] - 1, extent[2] - 1);
+    int bits = 1;
+    while (bits < 32 && (max_key >> bits) != 0) ++bits;
+    if ((max_key >> 31) != 0) {
+      std::sort(entries.begin(), entries.end(), [](std::uint64_t p, std::uint64_t q) {
+        return p < q;
+      });  // more than 2^31 cells: keys overflow the radix layout, fall back (never in practice)
+    } else {
+      radix_sort_by_key(entries, scratch, bits);
+    }
+  }
+};
+
+// One thread's screening of whole grid steps: arc bounds, boxes, pairs, narrow phase; its
+// events and statistics accumulate here.
 struct Worker {
   const std::vector<SpaceObject>* objects;
-  const std::vector<ObjectBounds>* bounds;
   const ScreenOptions* opt;
-  double span_s;
-  long nsteps;
-  long k_begin;
-  long k_end;
-  bool report_progress;
+  const Ephemeris* eph;
+  double d_max;
+  StepArcs arcs;
   std::vector<Conjunction> events;
   ScreenStats stats;
-  // Per-step scratch.
-  std::vector<ArcBounds> step_bounds;
-  std::vector<Vec3> lo, hi;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+  std::vector<ArcBounds> step_bounds;  // conic bounds (two-body), or per step (J2)
+  BoxGrid grid;
+  std::vector<double> size_m;  // L_i + dR_i of every object (eq. 1)
+  // One cell's members and their boxes, one array per coordinate, for the pair loop.
+  std::vector<std::uint32_t> cell_obj;
+  std::array<std::vector<double>, 6> cell_box;  // lo x, y, z, hi x, y, z
+  std::array<std::vector<std::int32_t>, 3> cell_low;  // lowest cell x, y, z
+  std::vector<unsigned char> overlap;
 
-  double grid_time(long k) const {
-    return k >= nsteps ? span_s : std::min(static_cast<double>(k) * opt->step_s, span_s);
+  // D_ij = max(D, N R_c(i, j)) (pair_threshold_m from the per-object sums).
+  double pair_threshold(std::size_t i, std::size_t j) const {
+    if (!opt->include_warning_radius) return opt->threshold_m;
+    return std::max(opt->threshold_m, opt->warning_multiple * (size_m[i] + size_m[j]));
   }
 
   // Arc bounds of every object on [t_a, t_a + dt] (J2: arc lemma; two-body: the conic).
-  void update_step_bounds(const std::vector<StateEci>& sa, const std::vector<StateEci>& sb,
-                          double dt) {
+  void update_step_bounds(const StateEci* sa, const StateEci* sb, double dt) {
     if (opt->gravity != GravityModel::kTwoBodyJ2) return;  // conic bounds, set once
-    for (std::size_t i = 0; i < sa.size(); ++i) {
+    for (std::size_t i = 0; i < step_bounds.size(); ++i) {
       const PerturbationBound pb = opt->motion ? opt->motion->perturbation(i) : PerturbationBound{};
       step_bounds[i] = arc_bounds(sa[i], sb[i], dt, opt->gravity, opt->earth, pb.accel_mps2);
       step_bounds[i].perturbation_rate_mps3 = pb.rate_mps3;
     }
   }
 
-  // Swept boxes of the step, padded by g h^2/8 + D/2; returns the grid cell size.
-  double build_boxes(const std::vector<StateEci>& sa, const std::vector<StateEci>& sb,
-                     double dt, double d_max) {
-    double cell = 0.0;
-    for (std::size_t i = 0; i < sa.size(); ++i) {
+  // Swept boxes of the step, padded by g h^2/8 + D/2, in the grid.
+  void build_boxes(const StateEci* sa, const StateEci* sb, double dt) {
+    const std::size_t n = step_bounds.size();
+    grid.lo.resize(n);
+    grid.hi.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
       const double pad = step_bounds[i].g_max_mps2 * dt * dt / 8.0 + 0.5 * d_max;
-      lo[i] = sa[i].r_eci_m.cwiseMin(sb[i].r_eci_m).array() - pad;
-      hi[i] = sa[i].r_eci_m.cwiseMax(sb[i].r_eci_m).array() + pad;
-      cell = std::max(cell, (hi[i] - lo[i]).maxCoeff());
+      grid.lo[i] = sa[i].r_eci_m.cwiseMin(sb[i].r_eci_m).array() - pad;
+      grid.hi[i] = sa[i].r_eci_m.cwiseMax(sb[i].r_eci_m).array() + pad;
     }
-    entries.clear();
-    for (std::size_t i = 0; i < sa.size(); ++i) {
-      const std::int64_t x0 = cell_index(lo[i].x(), cell), x1 = cell_index(hi[i].x(), cell);
-      const std::int64_t y0 = cell_index(lo[i].y(), cell), y1 = cell_index(hi[i].y(), cell);
-      const std::int64_t z0 = cell_index(lo[i].z(), cell), z1 = cell_index(hi[i].z(), cell);
-      for (std::int64_t x = x0; x <= x1; ++x)
-        for (std::int64_t y = y0; y <= y1; ++y)
-          for (std::int64_t z = z0; z <= z1; ++z)
-            entries.emplace_back(cell_key(x, y, z), static_cast<std::uint32_t>(i));
-    }
-    std::sort(entries.begin(), entries.end());
-    return cell;
+    grid.build(n);
   }
 
-  // Pairs of one grid step: box overlap, counted once, apogee/perigee, narrow phase.
-  void screen_step(const std::vector<StateEci>& sa, const std::vector<StateEci>& sb, double t_a,
-                   double t_b, double cell, Ephemeris& eph) {
+  // The pairs of one cell: box overlap, counted once (in the cell of the overlap's low
+  // corner), apogee/perigee, narrow phase.
+  void screen_cell(std::uint64_t key, const StateEci* sa, const StateEci* sb, double t_a,
+                   double t_b) {
+    const auto cz = static_cast<std::int32_t>(key % static_cast<std::uint64_t>(grid.extent[2]));
+    const std::uint64_t xy = key / static_cast<std::uint64_t>(grid.extent[2]);
+    const auto cy = static_cast<std::int32_t>(xy % static_cast<std::uint64_t>(grid.extent[1]));
+    const auto cx = static_cast<std::int32_t>(xy / static_cast<std::uint64_t>(grid.extent[1]));
     const PairContext ctx{objects, &step_bounds, opt};
-    for (std::size_t r0 = 0; r0 < entries.size();) {
-      std::size_t r1 = r0 + 1;
-      while (r1 < entries.size() && entries[r1].first == entries[r0].first) ++r1;
-      const std::uint64_t key = entries[r0].first;
-      for (std::size_t p = r0; p < r1; ++p) {
-        for (std::size_t q = p + 1; q < r1; ++q) {
-          ++stats.pairs_checked;
-          std::size_t i = entries[p].second, j = entries[q].second;
-          if (i > j) std::swap(i, j);
-          if (!opt->screens_pair(i, j)) continue;
-          if ((lo[i].array() > hi[j].array()).any() || (lo[j].array() > hi[i].array()).any())
-            continue;
-          const Vec3 corner = lo[i].cwiseMax(lo[j]);
-          if (cell_key(cell_index(corner.x(), cell), cell_index(corner.y(), cell),
-                       cell_index(corner.z(), cell)) != key)
-            continue;  // counted in the cell that holds the overlap's low corner
-          const double d_ij = pair_threshold_m((*objects)[i], (*objects)[j], *opt);
-          if (!apogee_perigee_may_meet(step_bounds[i], step_bounds[j], d_ij)) continue;
-          ++stats.candidates;
-          narrow_phase(i, j, Endpoint{t_a, sa[i], sa[j]}, Endpoint{t_b, sb[i], sb[j]}, sa[i],
-                       sa[j], t_a, d_ij, ctx, eph, events, stats);
+    const std::size_t m = cell_obj.size();
+    const double* lx = cell_box[0].data();
+    const double* ly = cell_box[1].data();
+    const double* lz = cell_box[2].data();
+    const double* hx = cell_box[3].data();
+    const double* hy = cell_box[4].data();
+    const double* hz = cell_box[5].data();
+    overlap.resize(m);
+    unsigned char* ov = overlap.data();
+    for (std::size_t p = 0; p < m; ++p) {
+      stats.pairs_checked += static_cast<long>(m - p - 1);
+      // Box overlap of p with every later member (branch-free, so the compiler vectorizes it).
+      for (std::size_t q = p + 1; q < m; ++q) {
+        ov[q] = static_cast<unsigned char>((lx[p] <= hx[q]) & (lx[q] <= hx[p]) & (ly[p] <= hy[q]) &
+                                           (ly[q] <= hy[p]) & (lz[p] <= hz[q]) & (lz[q] <= hz[p]));
+      }
+      for (std::size_t q = p + 1; q < m; ++q) {
+        if (!ov[q] || !opt->screens_pair(cell_obj[p], cell_obj[q])) continue;
+        if (std::max(cell_low[0][p], cell_low[0][q]) != cx ||
+            std::max(cell_low[1][p], cell_low[1][q]) != cy ||
+            std::max(cell_low[2][p], cell_low[2][q]) != cz)
+          continue;  // counted in the cell that holds the overlap's low corner
+        const std::size_t i = cell_obj[p], j = cell_obj[q];  // i < j (cells keep object order)
+        const double d_ij = pair_threshold(i, j);
+        if (!apogee_perigee_may_meet(step_bounds[i], step_bounds[j], d_ij)) continue;
+        ++stats.candidates;
+        narrow_phase(i, j, Endpoint{t_a, sa[i], sa[j]}, Endpoint{t_b, sb[i], sb[j]}, sa[i], sa[j],
+                     t_a, d_ij, ctx, *eph, arcs, events, stats);
+      }
+    }
+  }
+
+  // Grid step [t_a, t_b] with the states of every object at both ends.
+  void screen_step(const StateEci* sa, const StateEci* sb, double t_a, double t_b) {
+    ++stats.steps;
+    update_step_bounds(sa, sb, t_b - t_a);
+    build_boxes(sa, sb, t_b - t_a);
+    const std::vector<std::uint64_t>& e = grid.entries;
+    for (std::size_t r0 = 0; r0 < e.size();) {
+      const std::uint64_t key = e[r0] >> 32;
+      cell_obj.clear();
+      for (auto& c : cell_box) c.clear();
+      for (auto& c : cell_low) c.clear();
+      std::size_t r1 = r0;
+      for (; r1 < e.size() && (e[r1] >> 32) == key; ++r1) {
+        const auto i = static_cast<std::uint32_t>(e[r1] & 0xffffffffu);
+        const GridBox& b = grid.box[i];
+        cell_obj.push_back(i);
+        for (std::size_t a = 0; a < 3; ++a) {
+          cell_box[a].push_back(b.lo[a]);
+          cell_box[a + 3].push_back(b.hi[a]);
+          cell_low[a].push_back(b.cell[a]);
         }
       }
+      if (r1 - r0 > 1) screen_cell(key, sa, sb, t_a, t_b);
       r0 = r1;
     }
   }
+};
 
-  void run() {
-    const std::size_t n = objects->size();
-    Ephemeris eph(*objects, opt->gravity, opt->earth, opt->integ, opt->motion);
-    const double d_max = max_reporting_distance_m(*objects, *opt);
-    step_bounds = conic_bounds(*bounds, opt->earth);
-    lo.resize(n);
-    hi.resize(n);
-    entries.reserve(8 * n);
-    std::vector<StateEci> sa, sb;
-    const bool replay = opt->gravity == GravityModel::kTwoBodyJ2 && !opt->motion;  // DOP853 steps
-    const long k_first = replay ? 0 : k_begin;
-    for (long k = k_first; k <= k_begin; ++k) eph.states_at(grid_time(k), sa);
-    double t_a = grid_time(k_begin);
-    const long progress_every = std::max(1L, (k_end - k_begin) / 100);
-    for (long k = k_begin; k < k_end; ++k) {
-      const double t_b = grid_time(k + 1);
-      eph.states_at(t_b, sb);
-      ++stats.steps;
-      update_step_bounds(sa, sb, t_b - t_a);
-      const double cell = build_boxes(sa, sb, t_b - t_a, d_max);
-      screen_step(sa, sb, t_a, t_b, cell, eph);
-      std::swap(sa, sb);
-      t_a = t_b;
-      if (report_progress && opt->progress && ((k - k_begin + 1) % progress_every == 0)) {
-        opt->progress(static_cast<double>(k - k_begin + 1) / static_cast<double>(k_end - k_begin));
+// Runs body(t) on threads t = 0 .. nthreads - 1 (t = 0 on the calling thread); rethrows the
+// first exception.
+template <class Body>
+void run_parallel(int nthreads, const Body& body) {
+  if (nthreads == 1) {
+    body(0);
+    return;
+  }
+  std::vector<std::thread> threads;
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(nthreads));
+  for (int t = 1; t < nthreads; ++t) {
+    threads.emplace_back([&body, &errors, t]() {
+      try {
+        body(t);
+      } catch (...) {
+        errors[static_cast<std::size_t>(t)] = std::current_exception();
       }
+    });
+  }
+  try {
+    body(0);
+  } catch (...) {
+    errors[0] = std::current_exception();
+  }
+  for (auto& th : threads) th.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+// The grid steps [k_begin, k_end) of a screening, by blocks of grid steps: the threads first
+// advance every object (split by objects) through the block's grid times, then screen the
+// block's steps (split by steps). Each object's integrator visits every grid time from
+// t = 0 (J2), so its states, and therefore every event, do not depend on how the steps are
+// split between threads or processes.
+class StepRunner {
+ public:
+  StepRunner(const std::vector<SpaceObject>& objects, const std::vector<ObjectBounds>& bounds,
+             const ScreenOptions& opt, double span_s, long nsteps, int nthreads)
+      : objects_(objects), opt_(opt), span_s_(span_s), nsteps_(nsteps), nthreads_(nthreads),
+        eph_(objects, opt.gravity, opt.earth, opt.integ, opt.motion) {
+    const double d_max = max_reporting_distance_m(objects, opt);
+    const std::vector<ArcBounds> conic = conic_bounds(bounds, opt.earth);
+    std::vector<double> size_m(objects.size());
+    for (std::size_t i = 0; i < objects.size(); ++i)
+      size_m[i] = objects[i].size_m + objects[i].pos_error_m;
+    for (int t = 0; t < nthreads; ++t) {
+      workers_.push_back(Worker{&objects, &opt, &eph_, d_max, eph_.make_arcs(), {}, {}, conic, {},
+                                size_m, {}, {}, {}, {}});
     }
   }
+
+  void run(long k_begin, long k_end, ScreenResult& res) {
+    const std::size_t n = objects_.size();
+    // Grid states of one block: rows_[m] at grid time k0 + m.
+    const long block = std::clamp<long>(static_cast<long>(1'000'000 / std::max<std::size_t>(n, 1)), 4, 64);
+    rows_.assign(static_cast<std::size_t>(block) + 1, std::vector<StateEci>(n));
+    // J2: every grid time before k_begin (the integrators' steps end on each of them).
+    const bool replay = opt_.gravity == GravityModel::kTwoBodyJ2 && !opt_.motion;  // DOP853 steps
+    const long k_first = replay ? 0 : k_begin;
+    advance(k_first, k_begin, k_begin);
+    for (long k0 = k_begin; k0 < k_end; k0 += block) {
+      const long k1 = std::min(k_end, k0 + block);
+      if (k0 != k_begin) std::swap(rows_[0], rows_[static_cast<std::size_t>(block)]);
+      advance(k0 + 1, k1, k0);
+      screen_steps(k0, k1);
+      if (opt_.progress) {
+        opt_.progress(static_cast<double>(k1 - k_begin) / static_cast<double>(k_end - k_begin));
+      }
+    }
+    for (auto& w : workers_) {
+      res.events.insert(res.events.end(), w.events.begin(), w.events.end());
+      add_stats(res.stats, w.stats);
+    }
+  }
+
+ private:
+  double grid_time(long k) const {
+    return k >= nsteps_ ? span_s_ : std::min(static_cast<double>(k) * opt_.step_s, span_s_);
+  }
+
+  // Every object through grid times k_from .. k_to; the states at grid time k go to
+  // rows_[k - k_row0] when k >= k_row0 (objects split between threads in chunks).
+  void advance(long k_from, long k_to, long k_row0) {
+    if (k_from > k_to) return;
+    constexpr std::size_t kChunk = 64;
+    const std::size_t n = objects_.size();
+    std::atomic<std::size_t> next{0};
+    run_parallel(nthreads_, [&](int) {
+      for (std::size_t b = next.fetch_add(kChunk); b < n; b = next.fetch_add(kChunk)) {
+        const std::size_t e = std::min(n, b + kChunk);
+        for (long k = k_from; k <= k_to; ++k) {
+          std::vector<StateEci>& row = rows_[static_cast<std::size_t>(std::max(k - k_row0, 0L))];
+          eph_.states_at(grid_time(k), b, e, row.data());
+        }
+      }
+    });
+  }
+
+  // Grid steps [k0, k1) from rows_[0 .. k1 - k0] (steps split between threads).
+  void screen_steps(long k0, long k1) {
+    std::atomic<long> next{k0};
+    run_parallel(nthreads_, [&](int t) {
+      Worker& w = workers_[static_cast<std::size_t>(t)];
+      for (long k = next.fetch_add(1); k < k1; k = next.fetch_add(1)) {
+        const std::size_t m = static_cast<std::size_t>(k - k0);
+        w.screen_step(rows_[m].data(), rows_[m + 1].data(), grid_time(k), grid_time(k + 1));
+      }
+    });
+  }
+
+  const std::vector<SpaceObject>& objects_;
+  const ScreenOptions& opt_;
+  double span_s_;
+  long nsteps_;
+  int nthreads_;
+  Ephemeris eph_;
+  std::vector<Worker> workers_;
+  std::vector<std::vector<StateEci>> rows_;
 };
 
 const Param<ScreenOptions> kScreenOptionRows[] = {
@@ -529,27 +731,6 @@ long count_apogee_perigee_pairs(const std::vector<ObjectBounds>& bounds, double 
   return count;
 }
 
-void run_workers(std::vector<Worker>& workers) {
-  if (workers.size() == 1) {
-    workers[0].run();
-    return;
-  }
-  std::vector<std::thread> threads;
-  std::vector<std::exception_ptr> errors(workers.size());
-  for (std::size_t w = 0; w < workers.size(); ++w) {
-    threads.emplace_back([&workers, &errors, w]() {
-      try {
-        workers[w].run();
-      } catch (...) {
-        errors[w] = std::current_exception();
-      }
-    });
-  }
-  for (auto& t : threads) t.join();
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
-}
-
 }  // namespace
 
 namespace {
@@ -611,18 +792,9 @@ ScreenResult screen_robust_part(const std::vector<SpaceObject>& objects, double 
   const long p_end = nsteps * (part + 1) / parts;
   const long p_steps = p_end - p_begin;
   const int nthreads = static_cast<int>(std::min<long>(opt.threads, std::max(1L, p_steps)));
-  std::vector<Worker> workers;
-  workers.reserve(nthreads);
-  for (int w = 0; w < nthreads; ++w) {
-    const long k0 = p_begin + p_steps * w / nthreads;
-    const long k1 = p_begin + p_steps * (w + 1) / nthreads;
-    workers.push_back(Worker{&objects, &bounds, &opt, span_s, nsteps, k0, k1, w == 0, {}, {},
-                             {}, {}, {}, {}});
-  }
-  if (p_steps > 0) run_workers(workers);
-  for (auto& w : workers) {
-    res.events.insert(res.events.end(), w.events.begin(), w.events.end());
-    add_stats(res.stats, w.stats);
+  if (p_steps > 0) {
+    StepRunner runner(objects, bounds, opt, span_s, nsteps, nthreads);
+    runner.run(p_begin, p_end, res);
   }
   sort_events(res.events);
   return res;

@@ -2,11 +2,12 @@
 //
 // Two-body: analytic (KeplerOrbit, f and g functions; exact to rounding at any time).
 // Two-body + J2: numerical, one DOP853 integrator per object (HNW I sec. II.10, J2 of
-// Vallado eq. 8-30) stepped forward to each grid time; a state between two grid times comes
-// from the arc integrated from the grid state on the integrator's own steps and read from its
-// 7th-order dense output (HNW I sec. II.6). The arc of an object is integrated once per grid
-// step and shared by all its pairs; it does not depend on which times were asked first, so
-// results do not depend on the order of the pairs. Grid times must not decrease.
+// Vallado eq. 8-30, right-hand side inlined: orbit_rhs.hpp) stepped forward to each grid
+// time; a state between two grid times comes from the arc integrated from the grid state on
+// the integrator's own steps and read from its 7th-order dense output (HNW I sec. II.6). The
+// arc of an object is integrated once per grid step and shared by all its pairs (StepArcs,
+// one per thread); it does not depend on which times were asked first, so results do not
+// depend on the order of the pairs. Grid times must not decrease.
 // A MotionSource (motion_source.hpp; e.g. SGP4), when given, replaces both: every state
 // comes from it.
 #pragma once
@@ -20,8 +21,30 @@
 #include "evade/conjunction/types.hpp"
 #include "evade/dynamics/dop853.hpp"
 #include "evade/dynamics/gravity.hpp"
+#include "evade/dynamics/orbit_rhs.hpp"
 
 namespace evade::conjunction {
+
+/// The DOP853 integrator of one object under two-body + J2 (right-hand side inlined).
+using OrbitIntegrator = Dop853<Vec6, OrbitRhs>;
+
+/// The J2 arcs of one grid time: for each object asked for, the DOP853 integration from its
+/// grid state on the integrator's own steps (never clipped), read through the dense output.
+/// An arc does not depend on which times were asked first. One per thread.
+class StepArcs {
+ public:
+  /// prototype: the right-hand side and tolerances every arc is integrated with.
+  StepArcs(std::size_t n_objects, const OrbitIntegrator& prototype);
+  /// State of object i at t_s >= t_grid from its grid state s_grid at t_grid.
+  StateEci at(std::size_t i, double t_s, const StateEci& s_grid, double t_grid);
+
+ private:
+  OrbitIntegrator prototype_;
+  double t_grid_ = -1.0;
+  std::vector<long> arc_of_;                    // arcs_[arc_of_[i]] for object i, or -1
+  std::vector<std::size_t> objects_;            // objects with an arc at t_grid_
+  std::vector<std::vector<OrbitIntegrator>> arcs_;  // reused: only the first objects_.size()
+};
 
 class Ephemeris {
  public:
@@ -37,10 +60,18 @@ class Ephemeris {
   /// States of all objects at t_s (seconds since the epoch). For J2, t_s must not be
   /// earlier than the previous call's.
   void states_at(double t_s, std::vector<StateEci>& out);
+  /// Objects [begin, end) only, written to out[begin], ..., out[end - 1]. Calls on disjoint
+  /// ranges may run concurrently.
+  void states_at(double t_s, std::size_t begin, std::size_t end, StateEci* out);
   /// State of object i at t_s >= t_grid, given its state s_grid at a grid time t_grid (from
   /// states_at); t_s should lie within a screening step of t_grid. Not thread-safe (the
   /// J2 arcs are cached): one Ephemeris per thread.
   StateEci state_near(std::size_t i, double t_s, const StateEci& s_grid, double t_grid) const;
+  /// The same with the caller's arcs (thread-safe with one StepArcs per thread).
+  StateEci state_near(StepArcs& arcs, std::size_t i, double t_s, const StateEci& s_grid,
+                      double t_grid) const;
+  /// Arcs for state_near on another thread.
+  StepArcs make_arcs() const;
 
  private:
   std::size_t n_ = 0;
@@ -49,15 +80,10 @@ class Ephemeris {
   AdaptiveOptions integ_;
   std::shared_ptr<const MotionSource> motion_;
   std::vector<KeplerOrbit> kepler_;
-  std::vector<std::unique_ptr<Dop853<Vec6>>> numeric_;
-  // J2: the arcs of the current grid time t_grid (the integrator after each of its steps),
-  // arcs_[arc_of_[i]] for object i; dropped when a new grid time is asked for, so memory
-  // holds only the objects of one grid step.
-  using Arc = std::vector<Dop853<Vec6>>;
-  mutable double arcs_t_grid_ = -1.0;
-  mutable std::vector<Arc> arcs_;
-  mutable std::vector<long> arc_of_;
-  mutable std::vector<std::size_t> arc_objects_;
+  std::vector<OrbitIntegrator> numeric_;
+  // J2: the arcs of the current grid time for the single-threaded state_near; dropped when
+  // a new grid time is asked for, so memory holds only the objects of one grid step.
+  mutable std::unique_ptr<StepArcs> arcs_;
 };
 
 }  // namespace evade::conjunction

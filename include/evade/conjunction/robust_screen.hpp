@@ -7,8 +7,10 @@
 //     largest gravity acceleration on the orbit, mu / r_perigee^2, with a J2 margin);
 //   * so a pair can come within D during the step only if the boxes around the two chords,
 //     padded by g h^2/8 + D/2, overlap. Boxes go into a uniform grid whose cells are as
-//     large as the largest box (each box touches at most 8 cells); pairs are formed per
-//     cell and kept once (in the cell that holds the low corner of their box overlap).
+//     large as the largest box (each box touches at most 8 cells; the (cell, object) entries
+//     are sorted by a radix sort on the cell); pairs are formed per cell (the cell's boxes
+//     copied together and tested branch-free) and kept once (in the cell that holds the low
+//     corner of their box overlap).
 // Before that, the apogee/perigee filter (Hoots, Crawford & Roehrich, Celest. Mech. 33,
 // 1984) removes pairs whose radius ranges are more than D apart.
 // Narrow phase, per candidate pair and step, branch and bound on [a, b]:
@@ -28,8 +30,12 @@
 // eps_i on |r_i'' - a(r_i)| (a = two-body + J2) enters the arc lemma as G + eps_i, A as
 // K R_max + eps_i + eps_j, and the f'' bound with the rates (docs/VALIDATION.md, "Robust
 // mode with SGP4 motion"). ScreenOptions::primary limits the pairs to those of one object.
-// The steps are split between threads (std::thread), and between processes by
-// screen_robust_part; events are merged and sorted. Results do not depend on the split.
+// Threads (std::thread) work on blocks of grid steps: first they advance every object
+// through the block's grid times (objects split between them; under J2 each object's
+// integrator steps through every grid time from t = 0), then they screen the block's steps
+// (steps split between them). Processes split the steps by screen_robust_part (under J2 each
+// first advances its objects through the earlier grid times); events are merged and
+// sorted. Results do not depend on the split.
 #pragma once
 
 #include <cstddef>
@@ -65,7 +71,7 @@ struct ScreenOptions {
   bool screens_pair(std::size_t i, std::size_t j) const {
     return primary < 0 || static_cast<long>(i) == primary || static_cast<long>(j) == primary;
   }
-  /// Called from the first worker with its fraction done in [0, 1] (may be empty).
+  /// Called from the calling thread with the fraction done in [0, 1] (may be empty).
   std::function<void(double)> progress;
   /// Throws std::invalid_argument naming the option, value and allowed range (the table's
   /// rows as "robust.<key>", the Earth model with the Earth table).

@@ -70,14 +70,17 @@ struct IntegrationStats {
 /// Vector = any Eigen column vector (fixed or dynamic size). After reset(), each step()
 /// advances by one accepted step; dense() interpolates inside that step. Work vectors are
 /// sized in reset(), so stepping does not allocate beyond what the Rhs itself does.
-template <class Vector>
+/// Fn = the right-hand side's type: std::function by default; a function object type (called
+/// as Vector(double, const Vector&)) lets the compiler inline it and makes copies of the
+/// integrator cheap (no heap), with the same arithmetic and therefore the same steps.
+template <class Vector, class Fn = std::function<Vector(double, const Vector&)>>
 class Dop853 {
  public:
-  using Rhs = std::function<Vector(double, const Vector&)>;
+  using Rhs = Fn;
 
   explicit Dop853(Rhs f, AdaptiveOptions opt = {}) : f_(std::move(f)), opt_(opt) {
     opt_.validate();
-    if (!f_) throw std::invalid_argument("Dop853: empty right-hand side");
+    if (is_empty(f_)) throw std::invalid_argument("Dop853: empty right-hand side");
   }
 
   /// Starts a new integration at (t0_s, x0). Throws std::invalid_argument if not finite.
@@ -265,6 +268,15 @@ class Dop853 {
   static constexpr double kFacc1 = 1.0 / 0.333;  // largest step decrease 1/fac1
   static constexpr double kFacc2 = 1.0 / 6.0;    // largest step increase 1/fac2
   static constexpr double kExpo1 = 1.0 / 8.0;    // 1/8 - 0.2 beta, beta = 0
+
+  template <class G>
+  static bool is_empty(const std::function<G>& f) {
+    return !f;
+  }
+  template <class G>
+  static bool is_empty(const G&) {
+    return false;
+  }
 
   Vector eval(double t, const Vector& x) const {
     ++stats_.rhs_evaluations;
