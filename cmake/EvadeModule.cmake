@@ -5,6 +5,14 @@ function(evade_set_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Werror)
 endfunction()
 
+# The flight code (src/guidance, src/guidance_lcm, apps/evade_guidance_node) also gets
+# -Wpedantic -Wconversion -Wshadow: no implicit narrowing, no shadowed names, standard C++
+# only. A conversion the code needs is an explicit cast with a comment proving it safe.
+function(evade_set_flight_warnings target)
+  evade_set_warnings(${target})
+  target_compile_options(${target} PRIVATE -Wpedantic -Wconversion -Wshadow)
+endfunction()
+
 if(EVADE_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
   add_link_options(-fsanitize=address,undefined)
