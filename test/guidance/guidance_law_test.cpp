@@ -2,6 +2,8 @@
 // Closed-loop behaviours that need the truth (COAST after the encounter, Δv/burn limits on a
 // real run, the sign proof) are in test/sim/.
 #include <cmath>
+#include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -251,6 +253,86 @@ TEST(GuidanceConfig, ValidateNamesTheFieldValueAndRange) {
   c = GuidanceConfig{};
   c.min_track_updates = 0;
   EXPECT_NE(c.validate().find("min_track_updates"), std::string::npos);
+}
+
+// A measurement the sensor flags "no detection", or one that arrives after stale_limit_s,
+// is counted as invalid and not fed to the filter, and the law does not go SAFE on it: the
+// track and the evasion continue on the measurements that are timely (stage 1).
+TEST(GuidanceLaw, NoDetectionAndLateMeasurementsAreCountedAndIgnoredWithoutSafe) {
+  const Geometry g;
+  GuidanceLaw law(config());
+  ThrustCommand c;
+  std::int64_t t = kT0;
+  for (int k = 0; k < 5; ++k, t += kCycle) c = law.step(input(g, t, true), t);
+  ASSERT_EQ(c.mode, GuidanceMode::kEvade);
+  const long accepted = law.status().meas_accepted;
+
+  GuidanceInput none = input(g, t, true);
+  none.meas.valid = false;  // no detection this cycle
+  c = law.step(none, t);
+  EXPECT_EQ(c.mode, GuidanceMode::kEvade);
+  EXPECT_EQ(law.status().meas_invalid, 1);
+  EXPECT_EQ(law.status().meas_accepted, accepted);
+
+  t += kCycle;
+  GuidanceInput late = input(g, t, true);
+  late.meas = measure(g, t - 600'000);  // 0.6 s old: beyond the default 0.5 s limit
+  c = law.step(late, t);
+  EXPECT_EQ(c.mode, GuidanceMode::kEvade);
+  EXPECT_EQ(c.accel_mps2, 1.5);
+  EXPECT_EQ(law.status().meas_invalid, 2);
+  EXPECT_EQ(law.status().meas_accepted, accepted);
+}
+
+// reset() is a new encounter: no track (STANDBY), the cycle and Δv tallies from zero, and
+// the full budget available to the next evasion.
+TEST(GuidanceLaw, ResetForgetsTheTrackAndTheSpentBudget) {
+  const Geometry g;
+  GuidanceLaw law(config());
+  std::int64_t t = kT0;
+  for (int k = 0; k < 6; ++k, t += kCycle) law.step(input(g, t, true), t);
+  ASSERT_EQ(law.status().mode, GuidanceMode::kEvade);
+  ASSERT_GT(law.status().dv_used_mps, 0.0);
+
+  law.reset();
+  EXPECT_EQ(law.status().cycles, 0);
+  EXPECT_EQ(law.status().dv_used_mps, 0.0);
+  GuidanceInput in = input(g, t, true);
+  in.has_measurement = false;
+  ThrustCommand c = law.step(in, t);
+  EXPECT_EQ(c.mode, GuidanceMode::kStandby);
+  EXPECT_EQ(c.reason, CommandReason::kNoTrack);
+  EXPECT_EQ(c.accel_mps2, 0.0);
+  for (int k = 0; k < 5; ++k) {
+    t += kCycle;
+    c = law.step(input(g, t, true), t);
+  }
+  EXPECT_EQ(c.mode, GuidanceMode::kEvade);
+  EXPECT_DOUBLE_EQ(c.accel_mps2, 1.5);
+  EXPECT_EQ(law.status().cycles, 6);
+}
+
+// The mode and reason names are the output vocabulary of the simulator's CSV and JSON and of
+// the node: one distinct name per value; a value outside the enum (a corrupted byte) is
+// named UNKNOWN / unknown, never read out of a table.
+TEST(GuidanceNames, EveryModeAndReasonHasItsOwnNameAndOthersAreUnknown) {
+  std::set<std::string> modes;
+  for (int m = 0; m <= static_cast<int>(GuidanceMode::kSafe); ++m) {
+    modes.insert(mode_name(static_cast<GuidanceMode>(m)));
+  }
+  EXPECT_EQ(modes.size(), 5u);
+  EXPECT_EQ(modes.count("UNKNOWN"), 0u);
+  EXPECT_STREQ(mode_name(GuidanceMode::kEvade), "EVADE");
+  EXPECT_STREQ(mode_name(static_cast<GuidanceMode>(200)), "UNKNOWN");
+
+  std::set<std::string> reasons;
+  for (int r = 0; r <= static_cast<int>(CommandReason::kLowLosRate); ++r) {
+    reasons.insert(reason_name(static_cast<CommandReason>(r)));
+  }
+  EXPECT_EQ(reasons.size(), 12u);
+  EXPECT_EQ(reasons.count("unknown"), 0u);
+  EXPECT_STREQ(reason_name(CommandReason::kPassedClosestApproach), "passed_closest_approach");
+  EXPECT_STREQ(reason_name(static_cast<CommandReason>(200)), "unknown");
 }
 
 }  // namespace

@@ -150,6 +150,22 @@ TEST(LosGeometry, FallbackDirectionWhenLosRateIsZeroIsTheFlipConventionsFixedPoi
   EXPECT_NEAR(k.e_theta_eci.norm(), 1.0, 1e-12);
 }
 
+// Degenerate navigation (velocity along the position, so the LOS cannot be off both): the
+// frame is still orthonormal and finite, so a bad nav sample never puts NaN into a thrust
+// direction.
+TEST(LosGeometry, FallbackFrameIsOrthonormalWhenLosIsAlongBothZenithAndVelocity) {
+  for (const Vec3& axis : {Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.6, 0.8)}) {
+    LosFrame f;
+    ASSERT_TRUE(los_frame(axis, Vec3::Zero(), 7e6 * axis, 10.0 * axis, 0.0, &f));
+    EXPECT_TRUE(f.fallback);
+    EXPECT_NEAR(f.e_theta_eci.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(f.e_omega_eci.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(f.e_theta_eci.dot(axis), 0.0, 1e-12);
+    EXPECT_NEAR(f.e_omega_eci.dot(axis), 0.0, 1e-12);
+    EXPECT_NEAR(f.e_theta_eci.dot(f.e_omega_eci), 0.0, 1e-12);
+  }
+}
+
 TEST(LosGeometry, RejectsNonFiniteInputs) {
   LosFrame f;
   EXPECT_FALSE(los_frame(Vec3(NAN, 0, 1), Vec3::Zero(), Vec3(7e6, 0, 0), Vec3::Zero(), 0.0, &f));

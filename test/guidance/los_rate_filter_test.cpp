@@ -84,6 +84,25 @@ TEST(LosRateFilter, ConvergesOnConstantRateLosWithNoise) {
   EXPECT_EQ(f.rejected(), 0);
 }
 
+// reset() forgets the track (the next measurement initializes it again, counters from
+// zero) and keeps the configuration.
+TEST(LosRateFilter, ResetForgetsTheTrackAndKeepsTheConfiguration) {
+  const GreatCircle gc = make_circle(Vec3(1, 2, 0.5), Vec3(0, 0, 1), 2e-3);
+  std::mt19937_64 rng(5);
+  LosFilterConfig cfg = quiet_config();
+  cfg.gate_chi2_2dof = 9.21;  // p = 0.99 instead of the default 0.999
+  LosRateFilter f(cfg);
+  for (int k = 0; k <= 50; ++k) update(f, noisy(gc.u(0.02 * k), 0.02 * k, 50e-6, rng));
+  ASSERT_TRUE(f.initialized());
+  ASSERT_GT(f.accepted(), 0);
+  f.reset();
+  EXPECT_FALSE(f.initialized());
+  EXPECT_EQ(f.accepted(), 0);
+  EXPECT_EQ(f.updates_since_init(), 0);
+  EXPECT_EQ(update(f, noisy(gc.u(2.0), 2.0, 50e-6, rng)), LosUpdateResult::kInitialized);
+  EXPECT_EQ(f.config().gate_chi2_2dof, 9.21);
+}
+
 TEST(LosRateFilter, UsesMeasuredRatesWhenPresent) {
   const GreatCircle gc = make_circle(Vec3(0.3, -1, 0.2), Vec3(1, 0, 0), 4e-9);  // paper 000
   LosFilterConfig cfg;

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <limits>
 #include <new>
+#include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -108,6 +110,27 @@ TEST(PlanExecutor, EachRejectionReasonIsNamedAndCounted) {
     EXPECT_FALSE(e.active());
     EXPECT_EQ(e.status().accepted, 0);
   }
+}
+
+// The rejection and end names are the node's plan-status vocabulary: one distinct name per
+// value, and a value outside the enum is UNKNOWN.
+TEST(PlanExecutor, EveryRejectionAndEndHasItsOwnName) {
+  std::set<std::string> rejects;
+  for (int r = 0; r < static_cast<int>(PlanReject::kCount); ++r) {
+    rejects.insert(plan_reject_name(static_cast<PlanReject>(r)));
+  }
+  EXPECT_EQ(rejects.size(), static_cast<std::size_t>(PlanReject::kCount));
+  EXPECT_EQ(rejects.count("UNKNOWN"), 0u);
+  EXPECT_STREQ(plan_reject_name(PlanReject::kOverBudget), "OVER_BUDGET");
+  EXPECT_STREQ(plan_reject_name(PlanReject::kCount), "UNKNOWN");
+  std::set<std::string> ends;
+  for (int e = 0; e <= static_cast<int>(PlanEnd::kSuperseded); ++e) {
+    ends.insert(plan_end_name(static_cast<PlanEnd>(e)));
+  }
+  EXPECT_EQ(ends.size(), 7u);
+  EXPECT_EQ(ends.count("UNKNOWN"), 0u);
+  EXPECT_STREQ(plan_end_name(PlanEnd::kMissedStart), "MISSED_START");
+  EXPECT_STREQ(plan_end_name(static_cast<PlanEnd>(99)), "UNKNOWN");
 }
 
 TEST(PlanExecutor, PlanIdMustBeNewerThanTheLastAccepted) {
