@@ -4,6 +4,7 @@
 // reason is counted in the status; a disarm cancels it; close-range evasion pre-empts it.
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -84,6 +85,62 @@ struct RejectCase {
   std::int8_t code;
   evade_burn_plan_t msg;
 };
+
+// PLAN-IN-1: bytes on EVADE_BURN_PLAN that are too large, not a plan, or a plan with
+// trailing bytes are rejected with their reason, counted, and never start a burn.
+TEST(NodePlan, OversizedAndUndecodablePlanBytesAreRejectedAndAccounted) {
+  Rig rig;
+  const std::vector<std::uint8_t> big(kMaxPlanBytes + 1, 0x5a);
+  rig.pub.send_bytes(kChanPlan, big.data(), static_cast<unsigned>(big.size()));
+  const std::uint8_t junk[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  rig.pub.send_bytes(kChanPlan, junk, sizeof(junk));
+  std::uint8_t buf[kMaxPlanBytes] = {};
+  const evade_burn_plan_t good = plan_msg(1);
+  const int n = good.encode(buf, 0, static_cast<int>(sizeof(buf)));
+  ASSERT_GT(n, 0);
+  ASSERT_LT(n, static_cast<int>(sizeof(buf)));
+  rig.pub.send_bytes(kChanPlan, buf, static_cast<unsigned>(n + 1));  // one trailing byte
+  for (int k = 0; k < 100; ++k) EXPECT_EQ(nav_cycle(rig, k).accel_mps2, 0.0);
+  const InputCounts& c = rig.node.counts();
+  EXPECT_EQ(c.by_reason[static_cast<int>(Reason::kOversize)], 1);
+  EXPECT_EQ(c.by_reason[static_cast<int>(Reason::kDecodeFailed)], 2);
+  EXPECT_EQ(c.rejected, 3);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, 0);
+  expect_accounted(rig);
+}
+
+// Lockstep (NODE-RT-2): a tick is one cycle; a tick with a negative time or a replayed tick
+// number is not a tick; a tick that arrives before the previous one got its cycle is
+// counted as missed.
+TEST(NodeLockstep, TicksAreValidatedReplaysIgnoredAndMissedTicksCounted) {
+  NodeConfig cfg;
+  cfg.lockstep = true;
+  Rig rig(cfg);
+  std::int64_t utime = 0;
+  evade_sim_clock_t tick{};
+  tick.utime = -5;
+  tick.seq = 1;
+  rig.pub.send(kChanClock, tick);
+  EXPECT_EQ(rig.node.wait_for_tick(20, &utime), 0);  // invalid: no tick, times out
+  EXPECT_EQ(rig.node.ticks_received(), 0);
+  tick.utime = kT0;
+  rig.pub.send(kChanClock, tick);
+  ASSERT_EQ(rig.node.wait_for_tick(1000, &utime), 1);
+  EXPECT_EQ(utime, kT0);
+  rig.pub.send(kChanClock, tick);  // the same tick replayed
+  EXPECT_EQ(rig.node.wait_for_tick(20, &utime), 0);
+  EXPECT_EQ(rig.node.ticks_received(), 1);
+  for (std::int64_t k = 2; k <= 3; ++k) {  // two ticks before one cycle
+    tick.seq = k;
+    tick.utime = kT0 + k * kPeriodUs;
+    rig.pub.send(kChanClock, tick);
+  }
+  rig.node.drain();  // both ticks handled before the loop asks for one
+  ASSERT_EQ(rig.node.wait_for_tick(1000, &utime), 1);
+  EXPECT_EQ(utime, kT0 + 3 * kPeriodUs);
+  EXPECT_EQ(rig.node.ticks_received(), 3);
+  EXPECT_EQ(rig.node.ticks_missed(), 1);
+}
 
 TEST(NodePlan, EachRejectionReasonIsCountedInTheStatus) {
   const double nan = std::nan("");

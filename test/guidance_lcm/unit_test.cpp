@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
+#include <string>
 
 #include "evade/guidance_lcm/convert.hpp"
 #include "evade/guidance_lcm/internal/cycle_stats.hpp"
@@ -112,6 +114,73 @@ TEST(Validate, SimClockTickUtimeWithinZeroAndTheLimit) {
     t.utime = bad;
     EXPECT_EQ(validate(t), Reason::kOutOfRange) << bad;
   }
+}
+
+// NODE-IN-2 for the nav state: every component finite, and position and velocity within
+// the limits a spacecraft state can have (a corrupt but finite 1e300 is out of range).
+TEST(Validate, NavStateMustBeFiniteAndWithinLimits) {
+  evade_nav_state_t n{};
+  n.valid = true;
+  n.r_eci_m[0] = 7.0e6;
+  n.v_eci_mps[1] = 7.5e3;
+  EXPECT_EQ(validate(n), Reason::kOk);
+  evade_nav_state_t bad = n;
+  bad.v_eci_mps[2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(validate(bad), Reason::kNotFinite);
+  bad = n;
+  bad.r_eci_m[1] = -INFINITY;
+  EXPECT_EQ(validate(bad), Reason::kNotFinite);
+  bad = n;
+  bad.r_eci_m[2] = 1.0e300;
+  EXPECT_EQ(validate(bad), Reason::kOutOfRange);
+  bad = n;
+  bad.v_eci_mps[0] = 2.0 * Limits::kMaxVelocityMps;
+  EXPECT_EQ(validate(bad), Reason::kOutOfRange);
+}
+
+// A range measurement needs non-negative sigmas; a tick needs a non-negative time; a
+// command's mode is one of the five and a zero-thrust command's direction is zero or unit.
+TEST(Validate, RangeSigmasTickTimeAndCommandModeAndDirection) {
+  evade_angles_t a = good_angles();
+  a.has_range = true;
+  a.range_m = 1000.0;
+  a.range_rate_mps = -10.0;
+  EXPECT_EQ(validate(a), Reason::kOk);
+  a.sigma_range_rate_mps = -0.1;
+  EXPECT_EQ(validate(a), Reason::kOutOfRange);
+
+  evade_sim_clock_t tick{};
+  EXPECT_EQ(validate(tick), Reason::kOk);
+  tick.utime = -1;
+  EXPECT_EQ(validate(tick), Reason::kOutOfRange);
+  EXPECT_EQ(validate(evade_arm_t{}), Reason::kOk);
+
+  evade_thrust_cmd_t c{};
+  c.mode = -1;
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+  c.mode = evade_thrust_cmd_t::MODE_SAFE;
+  c.u_eci[2] = 1.0;  // zero thrust along a unit direction: allowed
+  EXPECT_EQ(validate(c), Reason::kOk);
+  c.u_eci[2] = 0.5;  // zero thrust, neither zero nor unit: a broken sender
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+  c.u_eci[2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(validate(c), Reason::kNotFinite);
+}
+
+// The reason names key the node's input accounting in its JSON summary: one distinct
+// snake_case name per reason, the ones docs/GUIDANCE_NODE.md quotes among them.
+TEST(Validate, EveryRejectionReasonHasItsOwnName) {
+  std::set<std::string> names;
+  for (int r = 0; r < static_cast<int>(Reason::kCount); ++r) {
+    const std::string n = reason_name(static_cast<Reason>(r));
+    EXPECT_NE(n, "?");
+    EXPECT_EQ(n.find_first_not_of("abcdefghijklmnopqrstuvwxyz_"), std::string::npos) << n;
+    names.insert(n);
+  }
+  EXPECT_EQ(names.size(), static_cast<std::size_t>(Reason::kCount));
+  EXPECT_EQ(names.count("decode_failed"), 1u);
+  EXPECT_EQ(names.count("seq_jump"), 1u);
+  EXPECT_STREQ(reason_name(Reason::kCount), "?");
 }
 
 TEST(Convert, AnglesAndNavRoundTripBitExact) {
