@@ -238,7 +238,7 @@ PrimerBound HcwTransfer::primer_bound(const Vec6& d) const {
   const Vec3 u2 = unit_or_zero(dv2);
   const Vec3 lr = rv_T_inv_.transpose() * (u1 - vv_T_.transpose() * u2);
   const Vec3& lv = u2;
-  double best2 = -1.0;
+  double best2 = 0.0;  // q >= 0: the first maximum wins, as with any negative start
   int best_j = 0;
   for (int j = 0; j <= kPrimerSamples; ++j) {
     const Vec3 p = rv_s_[j].transpose() * lr + vv_s_[j].transpose() * lv;
@@ -262,7 +262,7 @@ PrimerBound HcwTransfer::primer_bound(const Vec6& d) const {
 double HcwTransfer::certified_primer_max(const Vec6& lambda, int* argmax_j) const {
   const Vec3 lr = lambda.head<3>();
   const Vec3 lv = lambda.tail<3>();
-  double best2 = -1.0;
+  double best2 = 0.0;  // q >= 0: the first maximum wins, as with any negative start
   int best_j = 0;
   for (int j = 0; j <= kPrimerSamples; ++j) {
     const double q = (rv_s_[j].transpose() * lr + vv_s_[j].transpose() * lv).squaredNorm();
@@ -287,7 +287,7 @@ bool HcwTransfer::certify_primer_below(const Vec6& lambda, double cap) const {
   const double margin = h * h / 8.0 * p2_max;
   constexpr int kSub = 8;  // sub-steps of a refined interval: margin / 64
   const double sub_margin = margin / (kSub * kSub);
-  std::array<double, kPrimerSamples + 1> q{};
+  std::array<double, static_cast<std::size_t>(kPrimerSamples) + 1> q{};
   for (int j = 0; j <= kPrimerSamples; ++j) {
     q[j] = (rv_s_[j].transpose() * lr + vv_s_[j].transpose() * lv).norm();
     if (q[j] >= cap) return false;
