@@ -500,7 +500,7 @@ void Scenario::check_all_used() const {
     if (u.compare(0, parent.size(), parent) != 0) continue;
     std::string rest = u.substr(parent.size());
     const auto d = rest.find('.');
-    if (d != std::string::npos) rest = rest.substr(0, d) + ".…";
+    if (d != std::string::npos) rest.replace(d, std::string::npos, ".…");
     if (std::find(siblings.begin(), siblings.end(), rest) == siblings.end()) siblings.push_back(rest);
   }
   std::sort(siblings.begin(), siblings.end());
