@@ -58,7 +58,7 @@ Catalog read_omm_kvn(const std::string& text, const std::string& source) {
     const std::size_t vstart = value.find_first_not_of(" \t");
     const std::size_t vcol = eq + 2 + (vstart == std::string::npos ? 0 : vstart);
     const std::size_t bracket = value.find('[');
-    if (bracket != std::string::npos) value = value.substr(0, bracket);  // "[rev/day]"
+    if (bracket != std::string::npos) value.resize(bracket);  // "[rev/day]"
     value = trim(value);
     if (key == "CCSDS_OMM_VERS") {
       finish(st, cat, source);
