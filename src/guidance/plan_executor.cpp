@@ -264,7 +264,7 @@ PlanThrust PlanExecutor::next_burn(const NavState& nav, GuidanceMode law_mode,
     return PlanThrust{};
   }
   --cycles_left_;
-  const PlanThrust t = thrust(nav);
+  PlanThrust t = thrust(nav);  // not const: returned by (automatic) move
   prev_accel_mps2_ = t.accel_mps2;
   prev_us_ = now_us;
   return t;
