@@ -105,24 +105,30 @@ std::string validate_params(const ParamTable<Cfg>& table, const Cfg& c, const st
 
 }  // namespace evade
 
-// Row declarations. `path` is the field path inside Cfg, and becomes the key.
+// Row declarations. `path` is the field path inside Cfg, and becomes the key. It is a member
+// path (`filter.gate_chi2_2dof`), which cannot be parenthesized in `&c.path`: hence the
+// NOLINT(bugprone-macro-parentheses) on those lines.
 #define EVADE_PARAM_REAL(Cfg, path, unit, lo, hi, lo_open, meaning)                        \
   ::evade::Param<Cfg> {                                                                    \
     {#path, unit, ::evade::ParamType::kReal, lo, hi, lo_open, meaning},                   \
-        [](Cfg& c) -> double* { return &c.path; }, nullptr, nullptr, nullptr              \
+        [](Cfg& c) -> double* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */  \
+        nullptr, nullptr, nullptr                                                          \
   }
 #define EVADE_PARAM_INT(Cfg, path, unit, lo, hi, meaning)                                  \
   ::evade::Param<Cfg> {                                                                    \
     {#path, unit, ::evade::ParamType::kInt, lo, hi, false, meaning}, nullptr,             \
-        [](Cfg& c) -> int* { return &c.path; }, nullptr, nullptr                          \
+        [](Cfg& c) -> int* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */     \
+        nullptr, nullptr                                                                   \
   }
 #define EVADE_PARAM_BOOL(Cfg, path, meaning)                                               \
   ::evade::Param<Cfg> {                                                                    \
     {#path, "-", ::evade::ParamType::kBool, 0.0, 1.0, false, meaning}, nullptr, nullptr, \
-        [](Cfg& c) -> bool* { return &c.path; }, nullptr                                  \
+        [](Cfg& c) -> bool* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */    \
+        nullptr                                                                            \
   }
 #define EVADE_PARAM_SEED(Cfg, path, meaning)                                               \
   ::evade::Param<Cfg> {                                                                    \
     {#path, "-", ::evade::ParamType::kSeed, 0.0, 18446744073709551615.0, false, meaning}, \
-        nullptr, nullptr, nullptr, [](Cfg& c) -> std::uint64_t* { return &c.path; }       \
+        nullptr, nullptr, nullptr,                                                         \
+        [](Cfg& c) -> std::uint64_t* { return &c.path; } /* NOLINT(bugprone-macro-parentheses) */     \
   }

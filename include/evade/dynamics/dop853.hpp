@@ -78,7 +78,7 @@ class Dop853 {
  public:
   using Rhs = Fn;
 
-  explicit Dop853(Rhs f, AdaptiveOptions opt = {}) : f_(std::move(f)), opt_(opt) {
+  explicit Dop853(Rhs f, const AdaptiveOptions& opt = {}) : f_(std::move(f)), opt_(opt) {
     opt_.validate();
     if (is_empty(f_)) throw std::invalid_argument("Dop853: empty right-hand side");
   }
@@ -130,7 +130,6 @@ class Dop853 {
     }
     const double h_max = (opt_.h_max_s > 0.0) ? opt_.h_max_s : std::abs(t_end_s - t_);
     double h = dir * std::min(std::abs(h_), h_max);
-    const Vector& k1 = f_now_;
     for (;;) {
       if (stats_.steps_accepted + stats_.steps_rejected >= opt_.max_steps) {
         return fail("max_steps = " + std::to_string(opt_.max_steps) + " reached at t = " +
@@ -145,90 +144,12 @@ class Dop853 {
         h = t_end_s - t_;
         last = true;
       }
-      // Stages 2..12 (k_[j] holds stage j+2 here: k_[0] = stage 2, ..., k_[10] = stage 12).
-      Vector& k2 = k_[0];
-      Vector& k3 = k_[1];
-      Vector& k4 = k_[2];
-      Vector& k5 = k_[3];
-      Vector& k6 = k_[4];
-      Vector& k7 = k_[5];
-      Vector& k8 = k_[6];
-      Vector& k9 = k_[7];
-      Vector& k10 = k_[8];
-      Vector& k11 = k_[9];
-      Vector& k12 = k_[10];
-      y_ = x_ + h * (a21 * k1);
-      k2 = eval(t_ + c2 * h, y_);
-      y_ = x_ + h * (a31 * k1 + a32 * k2);
-      k3 = eval(t_ + c3 * h, y_);
-      y_ = x_ + h * (a41 * k1 + a43 * k3);
-      k4 = eval(t_ + c4 * h, y_);
-      y_ = x_ + h * (a51 * k1 + a53 * k3 + a54 * k4);
-      k5 = eval(t_ + c5 * h, y_);
-      y_ = x_ + h * (a61 * k1 + a64 * k4 + a65 * k5);
-      k6 = eval(t_ + c6 * h, y_);
-      y_ = x_ + h * (a71 * k1 + a74 * k4 + a75 * k5 + a76 * k6);
-      k7 = eval(t_ + c7 * h, y_);
-      y_ = x_ + h * (a81 * k1 + a84 * k4 + a85 * k5 + a86 * k6 + a87 * k7);
-      k8 = eval(t_ + c8 * h, y_);
-      y_ = x_ + h * (a91 * k1 + a94 * k4 + a95 * k5 + a96 * k6 + a97 * k7 + a98 * k8);
-      k9 = eval(t_ + c9 * h, y_);
-      y_ = x_ + h * (a101 * k1 + a104 * k4 + a105 * k5 + a106 * k6 + a107 * k7 + a108 * k8 +
-                     a109 * k9);
-      k10 = eval(t_ + c10 * h, y_);
-      y_ = x_ + h * (a111 * k1 + a114 * k4 + a115 * k5 + a116 * k6 + a117 * k7 + a118 * k8 +
-                     a119 * k9 + a1110 * k10);
-      k11 = eval(t_ + c11 * h, y_);
-      y_ = x_ + h * (a121 * k1 + a124 * k4 + a125 * k5 + a126 * k6 + a127 * k7 + a128 * k8 +
-                     a129 * k9 + a1210 * k10 + a1211 * k11);
-      k12 = eval(t_ + h, y_);
-      // 8th-order solution; k4 reused as the weighted slope (as in DP86CO).
-      k4 = b1 * k1 + b6 * k6 + b7 * k7 + b8 * k8 + b9 * k9 + b10 * k10 + b11 * k11 + b12 * k12;
-      x_new_ = x_ + h * k4;
-      // Error estimate (DP86CO): 5th- and 3rd-order estimators, scaled per component.
-      double err5 = 0.0;
-      double err3 = 0.0;
-      const auto n = x_.size();
-      for (decltype(x_.size()) i = 0; i < n; ++i) {
-        const double sk =
-            opt_.abs_tol + opt_.rel_tol * std::max(std::abs(x_[i]), std::abs(x_new_[i]));
-        const double e3 = (k4[i] - bhh1 * k1[i] - bhh2 * k9[i] - bhh3 * k12[i]) / sk;
-        const double e5 = (er1 * k1[i] + er6 * k6[i] + er7 * k7[i] + er8 * k8[i] + er9 * k9[i] +
-                           er10 * k10[i] + er11 * k11[i] + er12 * k12[i]) /
-                          sk;
-        err3 += e3 * e3;
-        err5 += e5 * e5;
-      }
-      double deno = err5 + 0.01 * err3;
-      if (deno <= 0.0) deno = 1.0;
-      double err = std::abs(h) * err5 * std::sqrt(1.0 / (static_cast<double>(n) * deno));
-      if (!std::isfinite(err) || !x_new_.allFinite()) {
-        err = std::numeric_limits<double>::infinity();  // reject with the largest reduction
-      }
+      eval_stages(h);
+      const double err = error_norm(h);
       const double fac11 = std::pow(err, kExpo1);
       const double fac = std::max(kFacc2, std::min(kFacc1, fac11 / kSafe));
       double h_new = h / fac;
-      if (err <= 1.0) {
-        // Accepted: FSAL stage 13 at the new point.
-        facold_ = std::max(err, 1e-4);
-        ++stats_.steps_accepted;
-        k13_ = eval(t_ + h, x_new_);
-        k1_step_ = k1;  // keep stage 1 of this step for the dense output
-        std::swap(x_prev_, x_);
-        std::swap(x_, x_new_);
-        t_prev_ = t_;
-        t_ = last ? t_end_s : t_ + h;
-        h_step_ = t_ - t_prev_;
-        f_now_ = k13_;
-        if (std::abs(h_new) > h_max && opt_.h_max_s > 0.0) h_new = dir * opt_.h_max_s;
-        if (reject_) h_new = dir * std::min(std::abs(h_new), std::abs(h));
-        reject_ = false;
-        h_ = h_new;
-        have_step_ = true;
-        dense_ready_ = false;
-        if (!x_.allFinite()) return fail("non-finite state");
-        return true;
-      }
+      if (err <= 1.0) return accept_step(h, h_new, err, dir, h_max, last, t_end_s);
       // Rejected (DP86CO): shrink by at most a factor 1/kFacc1.
       h_new = h / std::min(kFacc1, fac11 / kSafe);
       reject_ = true;
@@ -263,6 +184,114 @@ class Dop853 {
   }
 
  private:
+  // Stages 2..12 of a step of size h from (t_, x_) and the 8th-order solution x_new_ (DP86CO).
+  void eval_stages(double h) {
+    using namespace dop853_detail;
+    const Vector& k1 = f_now_;
+    // k_[j] holds stage j+2 here: k_[0] = stage 2, ..., k_[10] = stage 12.
+    Vector& k2 = k_[0];
+    Vector& k3 = k_[1];
+    Vector& k4 = k_[2];
+    Vector& k5 = k_[3];
+    Vector& k6 = k_[4];
+    Vector& k7 = k_[5];
+    Vector& k8 = k_[6];
+    Vector& k9 = k_[7];
+    Vector& k10 = k_[8];
+    Vector& k11 = k_[9];
+    Vector& k12 = k_[10];
+    y_ = x_ + h * (a21 * k1);
+    k2 = eval(t_ + c2 * h, y_);
+    y_ = x_ + h * (a31 * k1 + a32 * k2);
+    k3 = eval(t_ + c3 * h, y_);
+    y_ = x_ + h * (a41 * k1 + a43 * k3);
+    k4 = eval(t_ + c4 * h, y_);
+    y_ = x_ + h * (a51 * k1 + a53 * k3 + a54 * k4);
+    k5 = eval(t_ + c5 * h, y_);
+    y_ = x_ + h * (a61 * k1 + a64 * k4 + a65 * k5);
+    k6 = eval(t_ + c6 * h, y_);
+    y_ = x_ + h * (a71 * k1 + a74 * k4 + a75 * k5 + a76 * k6);
+    k7 = eval(t_ + c7 * h, y_);
+    y_ = x_ + h * (a81 * k1 + a84 * k4 + a85 * k5 + a86 * k6 + a87 * k7);
+    k8 = eval(t_ + c8 * h, y_);
+    y_ = x_ + h * (a91 * k1 + a94 * k4 + a95 * k5 + a96 * k6 + a97 * k7 + a98 * k8);
+    k9 = eval(t_ + c9 * h, y_);
+    y_ = x_ + h * (a101 * k1 + a104 * k4 + a105 * k5 + a106 * k6 + a107 * k7 + a108 * k8 +
+                   a109 * k9);
+    k10 = eval(t_ + c10 * h, y_);
+    y_ = x_ + h * (a111 * k1 + a114 * k4 + a115 * k5 + a116 * k6 + a117 * k7 + a118 * k8 +
+                   a119 * k9 + a1110 * k10);
+    k11 = eval(t_ + c11 * h, y_);
+    y_ = x_ + h * (a121 * k1 + a124 * k4 + a125 * k5 + a126 * k6 + a127 * k7 + a128 * k8 +
+                   a129 * k9 + a1210 * k10 + a1211 * k11);
+    k12 = eval(t_ + h, y_);
+    // 8th-order solution; k4 reused as the weighted slope (as in DP86CO).
+    k4 = b1 * k1 + b6 * k6 + b7 * k7 + b8 * k8 + b9 * k9 + b10 * k10 + b11 * k11 + b12 * k12;
+    x_new_ = x_ + h * k4;
+  }
+
+  // Scaled error norm of the step just evaluated by eval_stages (DP86CO); +inf when the
+  // step produced a non-finite value (rejected with the largest reduction).
+  double error_norm(double h) const {
+    using namespace dop853_detail;
+    const Vector& k1 = f_now_;
+    const Vector& k4 = k_[2];
+    const Vector& k6 = k_[4];
+    const Vector& k7 = k_[5];
+    const Vector& k8 = k_[6];
+    const Vector& k9 = k_[7];
+    const Vector& k10 = k_[8];
+    const Vector& k11 = k_[9];
+    const Vector& k12 = k_[10];
+    // Error estimate (DP86CO): 5th- and 3rd-order estimators, scaled per component.
+    double err5 = 0.0;
+    double err3 = 0.0;
+    const auto n = x_.size();
+    for (decltype(x_.size()) i = 0; i < n; ++i) {
+      const double sk =
+          opt_.abs_tol + opt_.rel_tol * std::max(std::abs(x_[i]), std::abs(x_new_[i]));
+      const double e3 = (k4[i] - bhh1 * k1[i] - bhh2 * k9[i] - bhh3 * k12[i]) / sk;
+      const double e5 = (er1 * k1[i] + er6 * k6[i] + er7 * k7[i] + er8 * k8[i] + er9 * k9[i] +
+                         er10 * k10[i] + er11 * k11[i] + er12 * k12[i]) /
+                        sk;
+      err3 += e3 * e3;
+      err5 += e5 * e5;
+    }
+    double deno = err5 + 0.01 * err3;
+    if (deno <= 0.0) deno = 1.0;
+    double err = std::abs(h) * err5 * std::sqrt(1.0 / (static_cast<double>(n) * deno));
+    if (!std::isfinite(err) || !x_new_.allFinite()) {
+      err = std::numeric_limits<double>::infinity();  // reject with the largest reduction
+    }
+    return err;
+  }
+
+  // Accepts the step of size h evaluated by eval_stages (error err) and proposes h_new for
+  // the next one (DP86CO).
+  bool accept_step(double h, double h_new, double err, double dir, double h_max, bool last,
+                   double t_end_s) {
+    const Vector& k1 = f_now_;
+    // Accepted: FSAL stage 13 at the new point.
+    facold_ = std::max(err, 1e-4);
+    ++stats_.steps_accepted;
+    k13_ = eval(t_ + h, x_new_);
+    k1_step_ = k1;  // keep stage 1 of this step for the dense output
+    std::swap(x_prev_, x_);
+    std::swap(x_, x_new_);
+    t_prev_ = t_;
+    t_ = last ? t_end_s : t_ + h;
+    h_step_ = t_ - t_prev_;
+    f_now_ = k13_;
+    if (std::abs(h_new) > h_max && opt_.h_max_s > 0.0) h_new = dir * opt_.h_max_s;
+    if (reject_) h_new = dir * std::min(std::abs(h_new), std::abs(h));
+    reject_ = false;
+    h_ = h_new;
+    have_step_ = true;
+    dense_ready_ = false;
+    if (!x_.allFinite()) return fail("non-finite state");
+    return true;
+  }
+
   static constexpr double kUround = 2.3e-16;
   static constexpr double kSafe = 0.9;
   static constexpr double kFacc1 = 1.0 / 0.333;  // largest step decrease 1/fac1
