@@ -107,11 +107,13 @@ PlanExecutor::PlanExecutor(const PlanExecutorConfig& cfg) noexcept
 // T/2 before the start of the centred window [t_i − N T/2, t_i + N T/2].
 PlanExecutor::Burn PlanExecutor::burn_of(const UplinkedPlan& p, int i) const noexcept {
   const Vec3 dv = dv_of(p, i);
-  const double mag = dv.norm();
+  // stableNorm / stableNormalized scale by the largest component first: a |dv| whose
+  // squares underflow (components near 1e-160 m/s and below) still gives a unit direction.
+  const double mag = dv.stableNorm();
   Burn b;
   b.cycles = static_cast<int>(burn_cycles(cfg_, mag));  // check_burns bounded it
   b.accel_mps2 = mag / (b.cycles * cfg_.cycle_s);
-  b.dir = mag > 0.0 ? Vec3(dv / mag) : Vec3::Zero();
+  b.dir = mag > 0.0 ? Vec3(dv.stableNormalized()) : Vec3::Zero();
   const double t_us = p.plan.impulses[static_cast<std::size_t>(i)].t_s * 1e6;
   const double half_us = 0.5 * static_cast<double>((b.cycles + 1) * cycle_us_);
   b.first_cycle_us = p.epoch_utime_us + std::llround(t_us - half_us);
