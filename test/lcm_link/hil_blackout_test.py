@@ -15,27 +15,15 @@ is not needed). Asserts, from the node's own commands as it sent them (the relay
 No timing figure is asserted (the machine is shared). Exit 77 without user namespaces.
 usage: hil_blackout_test.py SOURCE_DIR BUILD_DIR
 """
-import json
-import os
-import subprocess
 import sys
-import tempfile
+
+import hil_fault_case
 
 
 def main():
-    src, build = sys.argv[1], sys.argv[2]
-    with tempfile.TemporaryDirectory(prefix="evade_blackout_") as out:
-        env = dict(os.environ, EVADE_BUILD_DIR=build)
-        p = subprocess.run([os.path.join(src, "scripts", "hil_faults"), "--no-build", "--relay",
-                            "--case", "blackout", "--out", out], env=env,
-                           stdout=subprocess.PIPE, timeout=100)
-        if p.returncode == 77:
-            print("SKIP: unshare -rn is not permitted here (no user namespaces)")
-            return 77
-        if not p.stdout:
-            print(f"FAIL: scripts/hil_faults exited {p.returncode} without a result")
-            return 1
-        j = json.loads(p.stdout)["cases"]["blackout"]
+    status, j, returncode = hil_fault_case.run(sys.argv[1], sys.argv[2], "blackout")
+    if status is not None:
+        return status
     hist = " -> ".join(f"{e['mode']} {e['t_s']:.2f}" for e in j["mode_history"])
     print(f"miss {j['miss_m']:.4f} m; node modes: {hist}")
     print(f"SAFE {j['blackout_safe_after_s']} s after the blackout began; EVADE again "
@@ -56,7 +44,7 @@ def main():
     ]
     for what, ok in checks:
         print(f"{'ok  ' if ok else 'FAIL'} {what}")
-    return 0 if all(ok for _, ok in checks) and p.returncode == 0 else 1
+    return 0 if all(ok for _, ok in checks) and returncode == 0 else 1
 
 
 if __name__ == "__main__":

@@ -16,27 +16,15 @@ the node at its own fixed rate against `evade sim --realtime`, scripts/fault_rel
 No timing is asserted. Exit 77 without user namespaces.
 usage: hil_duplicate_test.py SOURCE_DIR BUILD_DIR
 """
-import json
-import os
-import subprocess
 import sys
-import tempfile
+
+import hil_fault_case
 
 
 def main():
-    src, build = sys.argv[1], sys.argv[2]
-    with tempfile.TemporaryDirectory(prefix="evade_duplicate_") as out:
-        env = dict(os.environ, EVADE_BUILD_DIR=build)
-        p = subprocess.run([os.path.join(src, "scripts", "hil_faults"), "--no-build", "--relay",
-                            "--case", "duplicate", "--out", out], env=env,
-                           stdout=subprocess.PIPE, timeout=100)
-        if p.returncode == 77:
-            print("SKIP: unshare -rn is not permitted here (no user namespaces)")
-            return 77
-        if not p.stdout:
-            print(f"FAIL: scripts/hil_faults exited {p.returncode} without a result")
-            return 1
-        j = json.loads(p.stdout)["cases"]["duplicate"]
+    status, j, returncode = hil_fault_case.run(sys.argv[1], sys.argv[2], "duplicate")
+    if status is not None:
+        return status
     i, rel = j["inputs"], j["relay"]
     ins = ("A>B EVADE_NAV", "A>B EVADE_ANGLES")
     dup = sum(rel[k]["duplicated"] for k in ins)
@@ -60,7 +48,7 @@ def main():
     ]
     for what, ok in checks:
         print(f"{'ok  ' if ok else 'FAIL'} {what}")
-    return 0 if all(ok for _, ok in checks) and p.returncode == 0 else 1
+    return 0 if all(ok for _, ok in checks) and returncode == 0 else 1
 
 
 if __name__ == "__main__":
