@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/config/scenario.hpp"
+#include "evade/sgp4/catalog.hpp"
 
 namespace evade::cli {
 
@@ -52,6 +53,10 @@ config::Scenario load_scenario(const CommonOptions& opts);
 /// The whole text of a file; std::invalid_argument "FLAG: cannot open 'PATH'" if it cannot
 /// be read.
 std::string read_text_file(const std::string& path, const std::string& flag);
+
+/// The catalog of --tle TLE_PATH (two- or three-line element sets) or, when TLE_PATH is empty,
+/// of --omm OMM_PATH (OMM KVN/XML, GP JSON/CSV); malformed entries are the catalog's issues.
+sgp4::Catalog read_catalog_file(const std::string& tle_path, const std::string& omm_path);
 
 /// Prints a JSON document on stdout (pretty, 2-space indent) followed by a newline.
 void print_json(const nlohmann::json& j);

@@ -6,8 +6,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -35,15 +33,6 @@ void check_options(const CatalogPropagateOptions& o) {
                                 " is invalid: expected a number > 0 with span/step <= 100000");
   if (o.frame != "teme" && o.frame != "eci")
     throw std::invalid_argument("--frame = '" + o.frame + "' is invalid: expected teme or eci");
-}
-
-sgp4::Catalog read_input(const CatalogPropagateOptions& o) {
-  const std::string& path = o.tle_path.empty() ? o.omm_path : o.tle_path;
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot open '" + path + "'");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return o.tle_path.empty() ? sgp4::read_catalog(os.str(), path) : sgp4::read_tle(os.str(), path);
 }
 
 nlohmann::json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
@@ -94,7 +83,7 @@ void print_text(const nlohmann::json& j) {
 
 int run_propagate_catalog(const CatalogPropagateOptions& o) {
   check_options(o);
-  const sgp4::Catalog cat = read_input(o);
+  const sgp4::Catalog cat = read_catalog_file(o.tle_path, o.omm_path);
   for (const auto& is : cat.issues) std::fprintf(stderr, "evade propagate: bad entry: %s\n", is.message().c_str());
   if (cat.objects.empty())
     throw std::invalid_argument("no valid element set in the file (" + std::to_string(cat.bad_entries) + " bad entries)");

@@ -7,8 +7,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -39,15 +37,6 @@ void check_options(const CatalogScreenOptions& o) {
   if (!(o.step_s == 0.0 || (o.step_s >= 1.0 && o.step_s <= 600.0)))
     throw std::invalid_argument("--step-s = " + std::to_string(o.step_s) +
                                 " is invalid: expected 0 (automatic) or a number in [1, 600] s");
-}
-
-sgp4::Catalog read_input(const CatalogScreenOptions& o) {
-  const std::string& path = o.tle_path.empty() ? o.omm_path : o.tle_path;
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot open '" + path + "'");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return o.tle_path.empty() ? sgp4::read_catalog(os.str(), path) : sgp4::read_tle(os.str(), path);
 }
 
 std::string utc(double j2000_s) { return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s)); }
@@ -105,7 +94,7 @@ void print_text(const nlohmann::json& j) {
 
 int run_screen_catalog(const CatalogScreenOptions& o) {
   check_options(o);
-  const sgp4::Catalog cat = read_input(o);
+  const sgp4::Catalog cat = read_catalog_file(o.tle_path, o.omm_path);
   for (const auto& is : cat.issues) std::fprintf(stderr, "evade screen: bad entry: %s\n", is.message().c_str());
   Sgp4MotionOptions mo;
   mo.span_s = o.span_s;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "cli.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::cli {
 namespace {
@@ -57,6 +58,11 @@ std::string read_text_file(const std::string& path, const std::string& flag) {
   std::ostringstream os;
   os << in.rdbuf();
   return os.str();
+}
+
+sgp4::Catalog read_catalog_file(const std::string& tle_path, const std::string& omm_path) {
+  if (tle_path.empty()) return sgp4::read_catalog(read_text_file(omm_path, "--omm"), omm_path);
+  return sgp4::read_tle(read_text_file(tle_path, "--tle"), tle_path);
 }
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
