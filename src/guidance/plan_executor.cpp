@@ -44,6 +44,16 @@ double burn_cycles(const PlanExecutorConfig& c, double mag) noexcept {
 // range: burn times, windows and cycle times stay far from int64 overflow.
 constexpr std::int64_t kMaxEpochAbsUs = 1000000000000000000;
 
+// Unit vector along a finite, nonzero v. Dividing by the largest |component| first gives a
+// vector whose largest entry is exactly ±1, so its norm is computed at full precision even
+// when v is subnormal (stableNormalized alone rounds the norm of a 1e-320 m/s Δv to the few
+// bits a subnormal holds and returns a direction off unit by 2e-4: fuzz finding 7).
+Vec3 unit_direction(const Vec3& v) noexcept {
+  const double scale = v.cwiseAbs().maxCoeff();
+  const Vec3 w = v / scale;
+  return w / w.norm();
+}
+
 // RSW → ECI rotation of the own orbit (columns R, S, W); false if nav cannot define it.
 bool rsw_to_eci(const NavState& nav, Mat3* m) noexcept {
   if (!nav.valid || !nav.r_eci_m.allFinite() || !nav.v_eci_mps.allFinite()) return false;
@@ -107,13 +117,13 @@ PlanExecutor::PlanExecutor(const PlanExecutorConfig& cfg) noexcept
 // T/2 before the start of the centred window [t_i − N T/2, t_i + N T/2].
 PlanExecutor::Burn PlanExecutor::burn_of(const UplinkedPlan& p, int i) const noexcept {
   const Vec3 dv = dv_of(p, i);
-  // stableNorm / stableNormalized scale by the largest component first: a |dv| whose
-  // squares underflow (components near 1e-160 m/s and below) still gives a unit direction.
+  // stableNorm scales by the largest component first: a |dv| whose squares underflow
+  // (components near 1e-160 m/s and below) is not rounded to zero.
   const double mag = dv.stableNorm();
   Burn b;
   b.cycles = static_cast<int>(burn_cycles(cfg_, mag));  // check_burns bounded it
   b.accel_mps2 = mag / (b.cycles * cfg_.cycle_s);
-  b.dir = mag > 0.0 ? Vec3(dv.stableNormalized()) : Vec3::Zero();
+  b.dir = mag > 0.0 ? unit_direction(dv) : Vec3::Zero();
   const double t_us = p.plan.impulses[static_cast<std::size_t>(i)].t_s * 1e6;
   const double half_us = 0.5 * static_cast<double>((b.cycles + 1) * cycle_us_);
   b.first_cycle_us = p.epoch_utime_us + std::llround(t_us - half_us);

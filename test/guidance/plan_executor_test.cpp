@@ -208,6 +208,40 @@ TEST(PlanExecutor, EciFrameFliesTheFixedEciDeltaV) {
   EXPECT_EQ(e.status().end, PlanEnd::kCompleted);
 }
 
+// PLAN-EXE-1 at the bottom of the double range (fuzz findings 6 and 7): a Δv whose squares
+// underflow (1e-170 m/s) or whose components are subnormal (a few ULPs of 4.9e-324) is flown
+// along a unit direction (to 1e-15, a few roundings of a normalisation) parallel to the
+// planned Δv, in either frame.
+TEST(PlanExecutor, TinyAndSubnormalImpulsesThrustAlongAUnitDirection) {
+  const double ulp = std::numeric_limits<double>::denorm_min();
+  const Vec3 cases[] = {Vec3(1e-170, 2e-170, 0.0), Vec3(2 * ulp, 91 * ulp, 0.0),
+                        Vec3(4200 * ulp, 1000 * ulp, 0.0), Vec3(0.0, 0.0, -ulp)};
+  for (const PlanFrame frame : {PlanFrame::kRsw, PlanFrame::kEci}) {
+    for (const Vec3& dv : cases) {
+      PlanExecutor e(config());
+      UplinkedPlan p = two_impulses();
+      p.frame = frame;
+      p.plan.n_impulses = 1;
+      p.plan.impulses[0].dv_rsw_mps = dv;
+      p.plan.impulses[0].dv_eci_valid = true;
+      p.plan.impulses[0].dv_eci_mps = dv;
+      ASSERT_EQ(load(e, p), PlanReject::kNone);
+      int thrusting = 0;
+      for (std::int64_t now = kT0; now < kT0 + 20'000'000; now += kCycleUs) {
+        const PlanThrust t = e.step(nav(), true, GuidanceMode::kStandby, now);
+        if (!(t.accel_mps2 > 0.0)) continue;
+        ++thrusting;
+        EXPECT_NEAR(t.u_eci.norm(), 1.0, 1e-15) << dv.transpose();
+        // RSW = ECI axes for this nav: the direction is dv's, compared on the scaled vector.
+        const Vec3 want = (dv / dv.cwiseAbs().maxCoeff()).normalized();
+        EXPECT_LT((t.u_eci - want).norm(), 1e-15) << dv.transpose();
+      }
+      EXPECT_EQ(thrusting, 1) << dv.transpose();  // one cycle: |dv| far below a_max T
+      EXPECT_EQ(e.status().end, PlanEnd::kCompleted);
+    }
+  }
+}
+
 // PLAN-END-1
 TEST(PlanExecutor, DisarmCancelsThePlan) {
   PlanExecutor e(config());
