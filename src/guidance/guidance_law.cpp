@@ -13,6 +13,13 @@
 #include "evade/guidance/los_geometry.hpp"
 
 namespace evade::guidance {
+namespace {
+
+// Longest t_go [s] kept as a time of closest approach: 1e9 s (31.7 years). Cycle times are at
+// most 1e18 µs (the node admits no later tick), so now + t_go stays far inside int64 µs.
+constexpr double kMaxTcaHorizonS = 1e9;
+
+}  // namespace
 
 const char* mode_name(GuidanceMode m) noexcept {
   switch (m) {
@@ -212,8 +219,11 @@ void GuidanceLaw::update_range_estimates(double los_rate_radps, std::int64_t now
   if (time_to_go_s(range_now, enc_.range_rate_mps, &t_go)) {
     status_.t_go_valid = true;
     status_.t_go_s = t_go;
-    enc_.have_tca_estimate = true;
-    enc_.tca_estimate_us = now_us + static_cast<std::int64_t>(t_go * 1e6);
+    // A t_go beyond kMaxTcaHorizonS (a nearly zero closing rate) predicts no closest approach
+    // this loop will fly to, and has no µs time: no estimate (fuzz finding 10).
+    enc_.have_tca_estimate = t_go <= kMaxTcaHorizonS;
+    if (enc_.have_tca_estimate)
+      enc_.tca_estimate_us = now_us + static_cast<std::int64_t>(t_go * 1e6);
   }
 }
 

@@ -35,9 +35,14 @@ Vec3 dv_of(const UplinkedPlan& p, int i) noexcept {
 // Whole cycles of a burn of |Δv| = mag at the thrust limit (at least one), as a double: a
 // finite but huge Δv (1e300 m/s) has no int cycle count, so check_burns compares this with
 // the burn-time limit before burn_of converts it.
+// The (1 - 1e-12) keeps an exact multiple (0.5 m/s at 1 m/s^2 and 20 ms: 25 cycles) from
+// rounding up to one cycle more; when it rounds down instead, |Δv| / (n T) would exceed the
+// thrust limit by up to 1e-12 relative, so such an n gets one cycle more (fuzz finding 8).
 double burn_cycles(const PlanExecutorConfig& c, double mag) noexcept {
-  const double n = std::ceil(mag / (c.max_accel_mps2 * c.cycle_s) * (1.0 - 1e-12));
-  return n < 1.0 ? 1.0 : n;
+  double n = std::ceil(mag / (c.max_accel_mps2 * c.cycle_s) * (1.0 - 1e-12));
+  if (n < 1.0) n = 1.0;
+  if (mag / (n * c.cycle_s) > c.max_accel_mps2) n += 1.0;
+  return n;
 }
 
 // Plan epochs beyond ±1e18 µs (±31,700 years) are refused with the times beyond the exact µs

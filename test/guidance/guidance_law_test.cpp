@@ -237,6 +237,37 @@ TEST(GuidanceLaw, RangeSensorGivesZemTgoAndCoastsWhenRangeRateTurnsPositive) {
   EXPECT_TRUE(saw_coast);
 }
 
+// Fuzz finding 10: a range rate of -1e-300 m/s (closing, but barely) gives t_go = 1e304 s,
+// which has no µs time; the law keeps t_go in its status but predicts no closest approach,
+// so when the range goes stale the t_go-elapsed trigger of the COAST latch cannot fire
+// from it. Before the fix the time of closest approach was an
+// out-of-range float-to-int conversion (INT64_MIN on x86: an "elapsed" TCA, COAST at once).
+TEST(GuidanceLaw, NearZeroClosingRatePredictsNoClosestApproach) {
+  Geometry g;
+  g.v = Vec3(0.0, -6000.0, 0.0);  // the 10 km pass above: closest approach at t = 10 s
+  GuidanceConfig cfg = config();
+  cfg.zem_trigger_m = 5000.0;
+  GuidanceLaw law(cfg);
+  for (int k = 0; k <= 250; ++k) {  // 5 s, range only in the first 4 cycles
+    const std::int64_t now = kT0 + k * kCycle;
+    GuidanceInput in = input(g, now, true);
+    in.meas = measure(g, now, k < 4);
+    in.meas.range_rate_mps = -1e-300;
+    const ThrustCommand c = law.step(in, now);
+    if (k == 3) {
+      ASSERT_TRUE(law.status().t_go_valid);
+      EXPECT_GT(law.status().t_go_s, 1e300);
+    }
+    // Tracking, then (angles only once the range is stale) whatever the LOS-rate trigger
+    // decides; never the COAST latch of a passed closest approach: it is 5 s ahead.
+    if (k >= 1) {
+      EXPECT_TRUE(c.mode == GuidanceMode::kTracking || c.mode == GuidanceMode::kEvade)
+          << "t = " << 0.02 * k << ", mode " << mode_name(c.mode);
+    }
+    EXPECT_NE(c.reason, CommandReason::kPassedClosestApproach) << "t = " << 0.02 * k;
+  }
+}
+
 TEST(GuidanceConfig, ValidateNamesTheFieldValueAndRange) {
   GuidanceConfig c;
   EXPECT_EQ(c.validate(), "");

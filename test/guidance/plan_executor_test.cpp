@@ -242,6 +242,28 @@ TEST(PlanExecutor, TinyAndSubnormalImpulsesThrustAlongAUnitDirection) {
   }
 }
 
+// Fuzz finding 8: |Δv| a hair (5e-13 relative) above a whole number of cycles at a_max. The
+// burn-cycle count's guard against rounding an exact multiple up made it round down, and
+// the burn flew at a_max (1 + 5e-13): above the thrust limit. Now it takes one cycle more,
+// never above a_max, and still delivers the planned Δv.
+TEST(PlanExecutor, ThrustNeverExceedsTheLimitWhenDvIsAHairAboveWholeCycles) {
+  for (const double excess : {5e-13, 1e-13, 1e-15}) {
+    PlanExecutor e(config());
+    UplinkedPlan p = two_impulses();
+    p.plan.n_impulses = 1;
+    p.plan.impulses[0].dv_rsw_mps = Vec3(0.5 * (1.0 + excess), 0.0, 0.0);  // 25 cycles + a hair
+    ASSERT_EQ(load(e, p), PlanReject::kNone);
+    double dv_mps = 0.0;
+    for (std::int64_t now = kT0; now < kT0 + 20'000'000; now += kCycleUs) {
+      const PlanThrust t = e.step(nav(), true, GuidanceMode::kStandby, now);
+      EXPECT_LE(t.accel_mps2, 1.0) << excess;
+      dv_mps += t.accel_mps2 * 0.02;
+    }
+    EXPECT_NEAR(dv_mps, 0.5 * (1.0 + excess), 1e-15) << excess;
+    EXPECT_EQ(e.status().end, PlanEnd::kCompleted);
+  }
+}
+
 // PLAN-END-1
 TEST(PlanExecutor, DisarmCancelsThePlan) {
   PlanExecutor e(config());
