@@ -47,30 +47,43 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
   const char* names[kInCount] = {kChanAngles, kChanNav, kChanArm};
   for (int c = 0; c < kInCount; ++c) {
     ctx_[c] = SubContext{this, c};
-    subs_[c] = lcm_subscribe(lcm_, names[c], &GuidanceNode::on_input, &ctx_[c]);
-    if (subs_[c] == nullptr)
-      throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + names[c]);
+    subs_[c] = subscribe(names[c], &GuidanceNode::on_input, &ctx_[c]);
     // LCM's own per-subscription queue (udpm default 30) would drop bursts silently before
     // our accounting sees them; make it large so the bounded queue we count is ours.
     lcm_subscription_set_queue_capacity(subs_[c], 10000);
   }
   if (cfg_.lockstep) {
-    clock_sub_ = lcm_subscribe(lcm_, kChanClock, &GuidanceNode::on_clock, this);
-    if (clock_sub_ == nullptr)
-      throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + kChanClock);
+    clock_sub_ = subscribe(kChanClock, &GuidanceNode::on_clock, this);
     lcm_subscription_set_queue_capacity(clock_sub_, 10000);
   }
-  plan_sub_ = lcm_subscribe(lcm_, kChanPlan, &GuidanceNode::on_plan, this);
-  if (plan_sub_ == nullptr)
-    throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + kChanPlan);
+  plan_sub_ = subscribe(kChanPlan, &GuidanceNode::on_plan, this);
   input_.armed = armed_;
 }
 
-GuidanceNode::~GuidanceNode() {
-  for (auto* s : subs_)
+GuidanceNode::~GuidanceNode() { unsubscribe_all(); }
+
+// A refused subscription undoes the ones already made before the constructor throws: the
+// destructor does not run for a node that failed to construct, and LCM would otherwise keep
+// calling back into it.
+lcm_subscription_t* GuidanceNode::subscribe(const char* channel, lcm_msg_handler_t handler,
+                                            void* user) {
+  lcm_subscription_t* s = lcm_subscribe(lcm_, channel, handler, user);
+  if (s == nullptr) {
+    unsubscribe_all();
+    throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + channel);
+  }
+  return s;
+}
+
+void GuidanceNode::unsubscribe_all() noexcept {
+  for (auto*& s : subs_) {
     if (s != nullptr) lcm_unsubscribe(lcm_, s);
+    s = nullptr;
+  }
   if (clock_sub_ != nullptr) lcm_unsubscribe(lcm_, clock_sub_);
   if (plan_sub_ != nullptr) lcm_unsubscribe(lcm_, plan_sub_);
+  clock_sub_ = nullptr;
+  plan_sub_ = nullptr;
 }
 
 void GuidanceNode::on_input(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {

@@ -44,7 +44,8 @@ class GuidanceNode {
  public:
   /// Subscribes on lcm (not owned) and preallocates everything; publishes on out_lcm if
   /// given (e.g. a file:// log in write mode during replay), else on lcm. Throws
-  /// std::invalid_argument on a bad config, std::runtime_error if LCM refuses a subscription.
+  /// std::invalid_argument on a bad config or a null lcm, std::runtime_error naming the
+  /// channel if LCM refuses a subscription (after undoing the subscriptions already made).
   GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm = nullptr);
   ~GuidanceNode();
   GuidanceNode(const GuidanceNode&) = delete;
@@ -84,6 +85,8 @@ class GuidanceNode {
     GuidanceNode* node;
     int channel;
   };
+  lcm_subscription_t* subscribe(const char* channel, lcm_msg_handler_t handler, void* user);
+  void unsubscribe_all() noexcept;
   static void on_input(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
   static void on_clock(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
   static void on_plan(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
