@@ -401,5 +401,103 @@ TEST(NodeFaults, NaNInUnusedFieldsRejectsTheWholeMessage) {
       Verdict::kRejected, 30);
 }
 
+// NODE-IN-2: a complete angles message followed by one more byte is not a message of the
+// type (the decoder stops early): rejected as decode_failed, never used.
+TEST(NodeFaults, MessageWithTrailingBytesIsRejected) {
+  run_against_reference(
+      60,
+      [&](Rig& r, int k, std::int64_t t) -> std::int64_t {
+        if (k % 3 != 1) return 0;
+        evade_angles_t a{};
+        r.enc.angles_at(t, &a);
+        a.elevation_rad += 0.05;  // wrong data: must not be used
+        a.seq = k + 2;            // newer than this cycle's good message
+        std::uint8_t buf[512] = {};
+        const int n = a.encode(buf, 0, sizeof(buf));
+        r.pub.send_bytes(kChanAngles, buf, static_cast<unsigned>(n + 1));
+        return 1;
+      },
+      Verdict::kRejected, 20);
+  Rig rig;
+  evade_angles_t a{};
+  rig.enc.angles_at(1000000, &a);
+  a.seq = 1;
+  std::uint8_t buf[512] = {};
+  const int n = a.encode(buf, 0, sizeof(buf));
+  rig.pub.send_bytes(kChanAngles, buf, static_cast<unsigned>(n + 1));
+  rig.cycle(1000000);
+  EXPECT_EQ(rig.node.counts().by_reason[static_cast<int>(Reason::kDecodeFailed)], 1);
+}
+
+// NODE-IN-3 on the arm channel: of two arm messages in one cycle the newer decides and the
+// older is superseded, whichever way they point.
+TEST(NodeFaults, NewestArmMessageOfACycleDecidesTheOlderIsSuperseded) {
+  Rig rig;
+  std::int64_t t = 1000000;
+  std::int64_t seq = 1;
+  for (int k = 0; k < 30; ++k, t += kPeriodUs) rig.good_cycle(t, seq++);
+  ASSERT_GT(rig.node.last_command().accel_mps2, 0.0);
+  evade_arm_t arm{};
+  arm.utime = t;
+  arm.seq = 1;
+  arm.armed = true;
+  rig.pub.send(kChanArm, arm);
+  arm.seq = 2;
+  arm.armed = false;
+  rig.pub.send(kChanArm, arm);
+  EXPECT_EQ(rig.good_cycle(t, seq++).accel_mps2, 0.0);
+  EXPECT_FALSE(rig.node.armed());
+  EXPECT_EQ(rig.node.counts().superseded, 1);
+  t += kPeriodUs;
+  arm.utime = t;
+  arm.seq = 3;
+  arm.armed = false;
+  rig.pub.send(kChanArm, arm);
+  arm.seq = 4;
+  arm.armed = true;
+  rig.pub.send(kChanArm, arm);
+  rig.good_cycle(t, seq++);
+  EXPECT_TRUE(rig.node.armed());
+  EXPECT_EQ(rig.node.counts().superseded, 2);
+  expect_accounted(rig.node, rig.pub.published());
+}
+
+// NODE-WD-1: angles messages flagged invalid are consumed (the sensor is alive and says it
+// has no measurement) but are not measurements: they do not keep the watchdog alive, so the
+// node goes SAFE one stale limit after the last valid one, as under silence.
+TEST(NodeFaults, AnglesFlaggedInvalidDoNotKeepTheWatchdogAlive) {
+  Rig rig;  // stale limit 0.5 s, 50 Hz
+  std::int64_t t = 1000000;
+  std::int64_t seq = 1;
+  for (int k = 0; k < 50; ++k, t += kPeriodUs) rig.good_cycle(t, seq++);
+  ASSERT_GT(rig.node.last_command().accel_mps2, 0.0) << "evading before the invalid angles";
+  const std::int64_t last_valid = t - kPeriodUs;
+  const std::int64_t consumed_before = rig.node.counts().consumed;
+  std::int64_t first_safe = -1;
+  for (int k = 0; k < 40; ++k, t += kPeriodUs) {
+    evade_nav_state_t n{};
+    rig.enc.nav_at(t, &n);
+    n.seq = seq;
+    rig.pub.send(kChanNav, n);
+    evade_angles_t a{};
+    rig.enc.angles_at(t, &a);
+    a.seq = seq++;
+    a.valid = false;
+    rig.pub.send(kChanAngles, a);
+    const evade_thrust_cmd_t c = rig.cycle(t);
+    if (c.mode == evade_thrust_cmd_t::MODE_SAFE && first_safe < 0) first_safe = t;
+    if (first_safe >= 0) {
+      EXPECT_EQ(c.accel_mps2, 0.0);
+    }
+  }
+  ASSERT_GE(first_safe, 0) << "never went SAFE on invalid-only angles";
+  EXPECT_GT(first_safe - last_valid, 500000);
+  EXPECT_LE(first_safe - last_valid, 500000 + kPeriodUs);
+  EXPECT_GT(rig.node.watchdog_cycles(), 0) << "the node's own watchdog fired";
+  EXPECT_EQ(rig.node.counts().consumed - consumed_before, 80) << "40 nav + 40 invalid angles";
+  EXPECT_EQ(rig.node.counts().rejected, 0);
+  expect_accounted(rig.node, rig.pub.published());
+}
+
 }  // namespace
 }  // namespace evade::guidance_lcm::test

@@ -142,6 +142,42 @@ TEST(NodeLockstep, TicksAreValidatedReplaysIgnoredAndMissedTicksCounted) {
   EXPECT_EQ(rig.node.ticks_missed(), 1);
 }
 
+// PLAN-IN-1: a plan stamped later than now + the future tolerance is rejected as from the
+// future before any field check, counted, and never flown.
+TEST(NodePlan, PlanStampedInTheFutureIsRejectedAndNeverFlown) {
+  Rig rig;
+  evade_burn_plan_t m = plan_msg(1);
+  m.utime = kT0 + 50001;  // tolerance 0.05 s after the first cycle at kT0
+  rig.pub.send(kChanPlan, m);
+  for (int k = 0; k < 100; ++k) EXPECT_EQ(nav_cycle(rig, k).accel_mps2, 0.0);
+  const InputCounts& c = rig.node.counts();
+  EXPECT_EQ(c.by_reason[static_cast<int>(Reason::kFromFuture)], 1);
+  EXPECT_EQ(c.rejected, 1);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, 0);
+  m.utime = kT0 + 50000;  // at the tolerance: accepted and flown (the cycle is at kT0)
+  Rig edge;
+  edge.pub.send(kChanPlan, m);
+  int thrust = 0;
+  for (int k = 0; k < 100; ++k) thrust += nav_cycle(edge, k).accel_mps2 > 0.0 ? 1 : 0;
+  EXPECT_EQ(thrust, 5);
+  expect_accounted(rig);
+  expect_accounted(edge);
+}
+
+// PLAN-IN-1: more plans in one cycle than the inbox holds (kPlanSlots): the oldest is
+// dropped and counted, the others are admitted in order and the newest is the one flown.
+TEST(NodePlan, PlansBeyondTheInboxInOneCycleDropTheOldest) {
+  Rig rig;
+  for (std::int64_t id = 1; id <= static_cast<std::int64_t>(kPlanSlots) + 1; ++id)
+    rig.pub.send(kChanPlan, plan_msg(id));
+  nav_cycle(rig, 0);
+  const InputCounts& c = rig.node.counts();
+  EXPECT_EQ(c.dropped, 1);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, static_cast<std::int64_t>(kPlanSlots));
+  EXPECT_EQ(rig.node.last_status().plan_id, static_cast<std::int64_t>(kPlanSlots) + 1);
+  expect_accounted(rig);
+}
+
 TEST(NodePlan, EachRejectionReasonIsCountedInTheStatus) {
   const double nan = std::nan("");
   std::vector<RejectCase> cases;

@@ -167,6 +167,35 @@ TEST(Validate, RangeSigmasTickTimeAndCommandModeAndDirection) {
   EXPECT_EQ(validate(c), Reason::kNotFinite);
 }
 
+// A range sigma is checked only when the range is flagged present; either negative one is
+// out of range, and a commanded acceleration outside [0, kMaxAccelMps2] is too.
+TEST(Validate, NegativeRangeSigmaAndAccelerationOutsideItsLimitsAreOutOfRange) {
+  evade_angles_t a = good_angles();
+  a.has_range = true;
+  a.range_m = 1000.0;
+  a.range_rate_mps = -10.0;
+  a.sigma_range_m = -1e-9;
+  EXPECT_EQ(validate(a), Reason::kOutOfRange);
+  a.sigma_range_m = 0.0;
+  a.sigma_range_rate_mps = -1e-9;
+  EXPECT_EQ(validate(a), Reason::kOutOfRange);
+  a.sigma_range_rate_mps = 0.0;
+  EXPECT_EQ(validate(a), Reason::kOk);
+
+  evade_thrust_cmd_t c{};
+  c.mode = evade_thrust_cmd_t::MODE_EVADE;
+  c.u_eci[0] = 1.0;
+  c.accel_mps2 = Limits::kMaxAccelMps2;
+  EXPECT_EQ(validate(c), Reason::kOk);
+  c.accel_mps2 = std::nextafter(Limits::kMaxAccelMps2, 1e9);
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+  c.accel_mps2 = -1e-12;
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+  c.accel_mps2 = 0.5;
+  c.u_eci[0] = 0.9;  // thrusting along a non-unit direction
+  EXPECT_EQ(validate(c), Reason::kOutOfRange);
+}
+
 // The reason names key the node's input accounting in its JSON summary: one distinct
 // snake_case name per reason, the ones docs/GUIDANCE_NODE.md quotes among them.
 TEST(Validate, EveryRejectionReasonHasItsOwnName) {
@@ -226,6 +255,84 @@ TEST(Convert, AnglesAndNavRoundTripBitExact) {
   EXPECT_EQ(nav2.r_eci_m, nav.r_eci_m);
   EXPECT_EQ(nav2.v_eci_mps, nav.v_eci_mps);
   EXPECT_EQ(nav2.utime_us, 42);
+}
+
+// The command and the status the node publishes, read back by a subscriber (the simulator,
+// the HIL scripts): bit-exact through the encoded bytes. The status carries ZEM and t_go
+// only as a pair (has_range), and never a stale value of an invalid one.
+TEST(Convert, CommandAndStatusRoundTripBitExact) {
+  guidance::ThrustCommand c;
+  c.utime_us = 1700000000123456LL;
+  c.mode = guidance::GuidanceMode::kEvade;
+  c.u_eci = Vec3(1.0 / 3.0, -std::sqrt(5.0 / 9.0), 1.0 / 3.0);
+  c.accel_mps2 = 0.1 + 1e-17;
+  c.reason = guidance::CommandReason::kLowLosRate;
+  evade_thrust_cmd_t cm{};
+  to_lcm(c, 41, 1700000000100000LL, &cm);
+  std::uint8_t buf[1024];
+  int n = cm.encode(buf, 0, sizeof(buf));
+  evade_thrust_cmd_t cback{};
+  ASSERT_EQ(cback.decode(buf, 0, n), n);
+  EXPECT_EQ(cback.seq, 41);
+  EXPECT_EQ(cback.input_utime, 1700000000100000LL);
+  guidance::ThrustCommand c2;
+  from_lcm(cback, &c2);
+  EXPECT_EQ(c2.utime_us, c.utime_us);
+  EXPECT_EQ(c2.mode, c.mode);
+  EXPECT_EQ(c2.u_eci, c.u_eci);
+  EXPECT_EQ(c2.accel_mps2, c.accel_mps2);
+  EXPECT_EQ(c2.reason, c.reason);
+
+  guidance::GuidanceStatus s;
+  s.mode = guidance::GuidanceMode::kTracking;
+  s.reason = guidance::CommandReason::kZemAboveTrigger;
+  s.track_valid = true;
+  s.los_rate_radps = 1.234567890123e-3;
+  s.los_rate_var_rad2ps2 = 1e-13;
+  s.e_theta_eci = Vec3(0.0, std::nextafter(1.0, 0.0), -0.0);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) s.e_theta_cov_eci(i, j) = 1e-6 * (3 * i + j + 1) / 7.0;
+  s.zem_valid = s.t_go_valid = true;
+  s.zem_m = 123.456789;
+  s.t_go_s = 9.87654321;
+  s.dv_used_mps = 0.75;
+  evade_guidance_status_t sm{};
+  to_lcm(s, &sm);
+  sm.utime = 99;
+  sm.cycles = 1234;
+  n = sm.encode(buf, 0, sizeof(buf));
+  evade_guidance_status_t sback{};
+  ASSERT_EQ(sback.decode(buf, 0, n), n);
+  guidance::GuidanceStatus s2;
+  from_lcm(sback, &s2);
+  EXPECT_EQ(s2.utime_us, 99);
+  EXPECT_EQ(s2.cycles, 1234);
+  EXPECT_EQ(s2.mode, s.mode);
+  EXPECT_EQ(s2.reason, s.reason);
+  EXPECT_EQ(s2.track_valid, s.track_valid);
+  EXPECT_EQ(s2.los_rate_radps, s.los_rate_radps);
+  EXPECT_EQ(s2.los_rate_var_rad2ps2, s.los_rate_var_rad2ps2);
+  EXPECT_EQ(s2.e_theta_eci, s.e_theta_eci);
+  EXPECT_EQ(s2.e_theta_cov_eci, s.e_theta_cov_eci);
+  EXPECT_TRUE(s2.zem_valid && s2.t_go_valid);
+  EXPECT_EQ(s2.zem_m, s.zem_m);
+  EXPECT_EQ(s2.t_go_s, s.t_go_s);
+  EXPECT_EQ(s2.dv_used_mps, s.dv_used_mps);
+
+  // One of the pair invalid: no range, and the invalid one is sent as 0, not its old value.
+  s.t_go_valid = false;
+  to_lcm(s, &sm);
+  EXPECT_FALSE(sm.has_range);
+  EXPECT_EQ(sm.zem_m, s.zem_m);
+  EXPECT_EQ(sm.t_go_s, 0.0);
+  s.zem_valid = false;
+  s.t_go_valid = true;
+  to_lcm(s, &sm);
+  EXPECT_FALSE(sm.has_range);
+  EXPECT_EQ(sm.zem_m, 0.0);
+  EXPECT_EQ(sm.t_go_s, s.t_go_s);
+  from_lcm(sm, &s2);
+  EXPECT_FALSE(s2.zem_valid || s2.t_go_valid);
 }
 
 TEST(SeqTracker, ClassifiesDuplicateOutOfOrderAndGaps) {
@@ -323,6 +430,25 @@ TEST(CycleStats, QuantilesOverTheWindowAndMaxSinceStart) {
   EXPECT_NEAR(s.quantile(0.99), 0.99 * 1024, 1.0);
   EXPECT_EQ(s.quantile(1.0), 1024.0);
   EXPECT_EQ(s.count(), 1025);
+}
+
+// The status reports 0 before the first sample (not an uninitialised window), a quantile
+// above 1 gives the window's largest sample (never a read past it), and overruns count up.
+TEST(CycleStats, EmptyWindowIsZeroQuantileClampedAndOverrunsCounted) {
+  CycleStats s;
+  EXPECT_EQ(s.quantile(0.5), 0.0);
+  EXPECT_EQ(s.max_us(), 0.0);
+  s.add(7.0);
+  s.add(3.0);
+  s.add(5.0);
+  EXPECT_EQ(s.max_us(), 7.0);
+  EXPECT_EQ(s.quantile(0.0), 3.0);
+  EXPECT_EQ(s.quantile(2.0), 7.0);
+  EXPECT_EQ(s.overruns(), 0);
+  s.add_overrun();
+  s.add_overrun();
+  EXPECT_EQ(s.overruns(), 2);
+  EXPECT_EQ(s.count(), 3);
 }
 
 }  // namespace

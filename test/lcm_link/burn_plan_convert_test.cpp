@@ -232,6 +232,22 @@ TEST(BurnPlanConvert, MalformedMessagesAreRejectedNamingTheField) {
       {[](evade::evade_burn_plan_t* m) { m->n_impulses = 9; }, "n_impulses", R::kImpulseCount},
       {[](evade::evade_burn_plan_t* m) { m->frame = 2; }, "frame", R::kUnknownFrame},
       {[](evade::evade_burn_plan_t* m) { m->frame = 1; }, "frame", R::kUnknownFrame},
+      {[](evade::evade_burn_plan_t* m) { m->frame = -1; }, "frame", R::kUnknownFrame},
+      {[](evade::evade_burn_plan_t* m) { m->eps_rad = -INFINITY; }, "eps_rad", R::kNotFinite},
+      {[](evade::evade_burn_plan_t* m) { m->objective_value = NAN; }, "objective_value",
+       R::kNotFinite},
+      {[](evade::evade_burn_plan_t* m) { m->objective = -1; }, "objective", R::kMalformed},
+      {[](evade::evade_burn_plan_t* m) { m->source = -1; }, "source", R::kMalformed},
+      {[](evade::evade_burn_plan_t* m) { m->source = 2; }, "source", R::kMalformed},
+      {[](evade::evade_burn_plan_t* m) { m->impulse_dv_mps[0] = NAN; }, "impulse_dv_mps",
+       R::kNotFinite},
+      {[](evade::evade_burn_plan_t* m) {
+         m->impulse_dv_eci_valid[0] = 1;  // the ECI delta-v is then read and must be finite
+         m->impulse_dv_eci_mps[0][1] = NAN;
+       },
+       "impulse_dv_eci_mps", R::kNotFinite},
+      {[](evade::evade_burn_plan_t* m) { m->impulse_dv_eci_valid[0] = -1; },
+       "impulse_dv_eci_valid", R::kMalformed},
   };
   for (const Case& c : cases) {
     evade::evade_burn_plan_t m = good;
@@ -244,7 +260,72 @@ TEST(BurnPlanConvert, MalformedMessagesAreRejectedNamingTheField) {
     out.plan_id = 123;
     EXPECT_FALSE(from_lcm(m, &out)) << c.field;
     EXPECT_EQ(out.plan_id, 123) << "rejected message changed the plan";
+    evade::guidance::UplinkedPlan up;
+    up.epoch_utime_us = 5;
+    EXPECT_FALSE(from_lcm(m, &up)) << c.field;
+    EXPECT_EQ(up.epoch_utime_us, 5) << "rejected message changed the uplinked plan";
   }
+}
+
+// The receiving side knows every planner code; the observability block (objective, angles,
+// objective value, evaluations) is checked, and carried, only for source 4.
+TEST(BurnPlanConvert, EveryPlannerCodeIsAcceptedAndOnlyObservabilityCarriesItsBlock) {
+  evade::evade_burn_plan_t good{};
+  to_lcm(observability_plan(), 1, 2, &good);
+  for (int code : {0, 1, 3, 5}) {
+    evade::evade_burn_plan_t m = good;
+    m.source = static_cast<std::int16_t>(code);
+    m.objective = 99;            // ignored: no observability block for this source
+    m.objective_value = NAN;
+    EXPECT_EQ(burn_plan_message_error(m), nullptr) << "source " << code;
+    BurnPlan out;
+    ASSERT_TRUE(from_lcm(m, &out)) << "source " << code;
+    EXPECT_EQ(out.source, code);
+    EXPECT_FALSE(out.observability.valid) << "source " << code;
+  }
+  BurnPlan out;
+  ASSERT_TRUE(from_lcm(good, &out));
+  EXPECT_TRUE(out.observability.valid);
+  EXPECT_EQ(out.observability.evaluations, 2801);
+}
+
+// The sending side refuses what the receiving side would reject, naming the field.
+TEST(BurnPlanConvert, EveryPlanFieldCheckRefusesItsBadValueNamingTheField) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  BurnPlan p = observability_plan();
+  p.observability.evaluations = -1;
+  EXPECT_NE(refusal(p).find("BurnPlan.observability.evaluations = -1: must be >= 0"),
+            std::string::npos);
+  p = observability_plan();
+  p.observability.eps_rad = inf;
+  EXPECT_NE(refusal(p).find("BurnPlan.observability.eps_rad = inf"), std::string::npos);
+  p = observability_plan();
+  p.observability.objective_value = nan;
+  EXPECT_NE(refusal(p).find("BurnPlan.observability.objective_value"), std::string::npos);
+  p = observability_plan();
+  p.observability.objective = -1;
+  EXPECT_NE(refusal(p).find("BurnPlan.observability.objective = -1"), std::string::npos);
+  p = observability_plan();
+  p.impulses[0].dv_rsw_mps.x() = nan;
+  EXPECT_NE(refusal(p).find("BurnPlan.impulses[0].dv_rsw_mps"), std::string::npos);
+  for (int code : {0, 1, 3, 5}) {  // every planner code without the block is sent
+    p = formation_plan_with_eci();
+    p.source = code;
+    EXPECT_EQ(refusal(p), "") << "source " << code;
+  }
+  // A frame code that is neither RSW nor ECI.
+  evade::evade_burn_plan_t m{};
+  m.seq = -7;
+  try {
+    to_lcm(formation_plan_with_eci(), 1, 2, 3, static_cast<evade::guidance::PlanFrame>(2), &m);
+    ADD_FAILURE() << "frame 2 was sent";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("BurnPlan.frame = 2: allowed 0 RSW, 1 ECI"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(m.seq, -7) << "message changed by a refused plan";
 }
 
 TEST(BurnPlanConvert, CorruptBytesAreRejectedByDecode) {
