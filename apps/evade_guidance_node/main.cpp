@@ -5,6 +5,8 @@
 // Exit codes: 0 normal stop (signal, --max-cycles, end of input), 1 runtime failure,
 // 2 bad input (flags or config, with the key, value and allowed range).
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstdio>
@@ -27,10 +29,13 @@ namespace {
 volatile std::sig_atomic_t g_stop = 0;
 extern "C" void on_signal(int) { g_stop = 1; }
 
+// Diagnostics go to stderr; a failed print there has no recovery (there is nowhere else to
+// report it), so the results of these std::fprintf(stderr, ...) are discarded explicitly.
+
 double quantile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
-  std::size_t k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  std::size_t k = static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
   if (k >= v.size()) k = v.size() - 1;
   return v[k];
 }
@@ -54,41 +59,47 @@ void warn_if_receive_buffer_capped(const std::string& url, int requested_bytes) 
   if (url.rfind("udpm://", 0) != 0) return;
   std::FILE* f = std::fopen("/proc/sys/net/core/rmem_max", "r");
   if (f == nullptr) return;
-  long rmem_max = 0;
-  const int n = std::fscanf(f, "%ld", &rmem_max);
-  std::fclose(f);
-  if (n == 1 && rmem_max < requested_bytes) {
-    std::fprintf(stderr, "evade_guidance_node: warning: the kernel caps the UDP receive buffer "
-                 "at %ld B (net.core.rmem_max) below the %d B requested (node.recv_buf_bytes); "
-                 "a burst larger than it may be dropped by the kernel, uncounted. Raise it with "
-                 "`sysctl -w net.core.rmem_max=%d`.\n", rmem_max, requested_bytes,
-                 requested_bytes);
+  char line[32] = {};
+  const bool read = std::fgets(line, sizeof line, f) != nullptr;
+  (void)std::fclose(f);  // opened read-only: nothing was written that a close failure could lose
+  if (!read) return;
+  char* end = nullptr;
+  errno = 0;
+  const long rmem_max = std::strtol(line, &end, 10);
+  if (end == line || errno != 0) return;  // not a number: no warning rather than a wrong one
+  if (rmem_max < requested_bytes) {
+    (void)std::fprintf(stderr, "evade_guidance_node: warning: the kernel caps the UDP receive "
+                       "buffer at %ld B (net.core.rmem_max) below the %d B requested "
+                       "(node.recv_buf_bytes); a burst larger than it may be dropped by the "
+                       "kernel, uncounted. Raise it with `sysctl -w net.core.rmem_max=%d`.\n",
+                       rmem_max, requested_bytes, requested_bytes);
   }
 }
 
 void print_banner(const evade::node::NodeOptions& o, const evade::guidance_lcm::NodeConfig& c) {
-  std::fprintf(stderr, "evade_guidance_node: %s at %.6g Hz, %s, max accel %.6g m/s^2, stale %.6g s, "
-               "%s\n", o.lockstep ? "lockstep" : "fixed rate", c.guidance.rate_hz,
-               o.lcm_url.empty() ? "default LCM URL" : o.lcm_url.c_str(),
-               c.guidance.max_accel_mps2, c.guidance.stale_limit_s,
-               c.guidance.armed ? "armed" : "disarmed");
+  (void)std::fprintf(stderr,
+                     "evade_guidance_node: %s at %.6g Hz, %s, max accel %.6g m/s^2, stale "
+                     "%.6g s, %s\n", o.lockstep ? "lockstep" : "fixed rate", c.guidance.rate_hz,
+                     o.lcm_url.empty() ? "default LCM URL" : o.lcm_url.c_str(),
+                     c.guidance.max_accel_mps2, c.guidance.stale_limit_s,
+                     c.guidance.armed ? "armed" : "disarmed");
 }
 
 void print_summary(const evade::guidance_lcm::GuidanceNode& n, const char* why) {
   const auto& c = n.counts();
   const auto& cs = n.compute_stats();
-  std::fprintf(stderr,
-               "evade_guidance_node: stopped (%s) after %lld cycles; inputs %lld = consumed "
-               "%lld + rejected %lld + stale %lld + superseded %lld + dropped %lld; seq gaps "
-               "%lld; watchdog cycles %lld; overruns %lld; cycle p50 %.1f us p99 %.1f us max "
-               "%.1f us\n",
-               why, static_cast<long long>(n.cycles()), static_cast<long long>(c.received),
-               static_cast<long long>(c.consumed), static_cast<long long>(c.rejected),
-               static_cast<long long>(c.stale), static_cast<long long>(c.superseded),
-               static_cast<long long>(c.dropped), static_cast<long long>(c.seq_gaps),
-               static_cast<long long>(n.watchdog_cycles()),
-               static_cast<long long>(cs.overruns()), cs.quantile(0.5), cs.quantile(0.99),
-               cs.max_us());
+  (void)std::fprintf(stderr,
+                     "evade_guidance_node: stopped (%s) after %lld cycles; inputs %lld = consumed "
+                     "%lld + rejected %lld + stale %lld + superseded %lld + dropped %lld; seq gaps "
+                     "%lld; watchdog cycles %lld; overruns %lld; cycle p50 %.1f us p99 %.1f us max "
+                     "%.1f us\n",
+                     why, static_cast<long long>(n.cycles()), static_cast<long long>(c.received),
+                     static_cast<long long>(c.consumed), static_cast<long long>(c.rejected),
+                     static_cast<long long>(c.stale), static_cast<long long>(c.superseded),
+                     static_cast<long long>(c.dropped), static_cast<long long>(c.seq_gaps),
+                     static_cast<long long>(n.watchdog_cycles()),
+                     static_cast<long long>(cs.overruns()), cs.quantile(0.5), cs.quantile(0.99),
+                     cs.max_us());
 }
 
 nlohmann::json inputs_json(const evade::guidance_lcm::InputCounts& c) {
@@ -135,12 +146,14 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
   return j;
 }
 
+// SIGINT and SIGTERM set g_stop (the loops' clean stop). Throws if the kernel refuses, since
+// the node could then not be stopped cleanly.
 void install_signal_handlers() {
   struct sigaction sa {};
   sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
+  if (sigemptyset(&sa.sa_mask) != 0 || sigaction(SIGINT, &sa, nullptr) != 0 ||
+      sigaction(SIGTERM, &sa, nullptr) != 0)
+    throw std::runtime_error("cannot install the SIGINT/SIGTERM handlers");
 }
 
 // Opens LCM, runs the loop until it stops, reports. Returns the exit code.
@@ -154,7 +167,8 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
   if (!opts.out_lcm_url.empty()) out = open_lcm(opts.out_lcm_url);
   guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get());
   install_signal_handlers();
-  if (opts.realtime) node::try_realtime(opts.rt_priority);
+  // try_realtime says on stderr what was refused; the node runs on without it, by design.
+  if (opts.realtime) (void)node::try_realtime(opts.rt_priority);
   if (!opts.quiet) print_banner(opts, cfg);
   node::LoopLimits lim;
   lim.max_cycles = opts.max_cycles;
@@ -165,13 +179,13 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
       opts.lockstep ? node::run_lockstep(nodecore, lim, &g_stop)
                     : node::run_fixed_rate(nodecore, cfg.guidance.rate_hz, lim, &g_stop);
   if (!opts.quiet) print_summary(nodecore, res.why);
-  if (opts.stats_json) std::printf("%s\n", stats_json(nodecore, opts.lockstep, res).dump(2).c_str());
+  if (opts.stats_json &&
+      std::printf("%s\n", stats_json(nodecore, opts.lockstep, res).dump(2).c_str()) < 0)
+    throw std::runtime_error("cannot write the --stats-json report to stdout");
   return res.exit_code;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int node_main(int argc, char** argv) {
   using namespace evade;
   node::NodeOptions opts;
   CLI::App app{"evade_guidance_node: paper-000 close-range evasion guidance over LCM",
@@ -188,16 +202,31 @@ int main(int argc, char** argv) {
   try {
     cfg = node::make_node_config(opts);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
+    (void)std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
     return 2;
   }
   try {
     return run_node(opts, cfg);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
+    (void)std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "evade_guidance_node: failed: %s\n", e.what());
+    (void)std::fprintf(stderr, "evade_guidance_node: failed: %s\n", e.what());
     return 1;
   }
+}
+
+}  // namespace
+
+// Nothing escapes main: an exception from the option parser's setup (e.g. std::bad_alloc) is
+// reported and is a runtime failure (exit 1), not std::terminate.
+int main(int argc, char** argv) {
+  try {
+    return node_main(argc, argv);
+  } catch (const std::exception& e) {
+    (void)std::fprintf(stderr, "evade_guidance_node: failed: %s\n", e.what());
+  } catch (...) {
+    (void)std::fprintf(stderr, "evade_guidance_node: failed: unknown exception\n");
+  }
+  return 1;
 }

@@ -6,6 +6,7 @@
 #include <time.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -27,16 +28,18 @@ timespec to_timespec(std::int64_t ns) {
   return ts;
 }
 
+// The diagnostics below go to stderr; a failed print there has no recovery (there is nowhere
+// else to report it) and must not stop the loop, so its result is discarded explicitly.
 void progress_line(const guidance_lcm::GuidanceNode& node) {
   const auto& c = node.counts();
-  std::fprintf(stderr,
-               "evade_guidance_node: %lld cycles, mode %d, in %lld (consumed %lld rejected %lld "
-               "stale %lld superseded %lld dropped %lld), overruns %lld\n",
-               static_cast<long long>(node.cycles()), node.last_command().mode,
-               static_cast<long long>(c.received), static_cast<long long>(c.consumed),
-               static_cast<long long>(c.rejected), static_cast<long long>(c.stale),
-               static_cast<long long>(c.superseded), static_cast<long long>(c.dropped),
-               static_cast<long long>(node.compute_stats().overruns()));
+  (void)std::fprintf(stderr,
+                     "evade_guidance_node: %lld cycles, mode %d, in %lld (consumed %lld "
+                     "rejected %lld stale %lld superseded %lld dropped %lld), overruns %lld\n",
+                     static_cast<long long>(node.cycles()), node.last_command().mode,
+                     static_cast<long long>(c.received), static_cast<long long>(c.consumed),
+                     static_cast<long long>(c.rejected), static_cast<long long>(c.stale),
+                     static_cast<long long>(c.superseded), static_cast<long long>(c.dropped),
+                     static_cast<long long>(node.compute_stats().overruns()));
 }
 
 // drain() < 0 ends the loop: SIGINT/SIGTERM arriving during LCM's select() makes it fail with
@@ -57,27 +60,29 @@ bool try_realtime(int priority) {
   sp.sched_priority = priority;
   if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0) {
     const int e = errno;
-    std::fprintf(stderr,
-                 "evade_guidance_node: --realtime: SCHED_FIFO priority %d refused (%s%s); "
-                 "continuing with the default scheduler, timing will be less regular\n",
-                 priority, std::strerror(e),
-                 e == EPERM ? ": needs root, CAP_SYS_NICE or an rtprio limit" : "");
+    (void)std::fprintf(stderr,
+                       "evade_guidance_node: --realtime: SCHED_FIFO priority %d refused "
+                       "(%s%s); continuing with the default scheduler, timing will be less "
+                       "regular\n",
+                       priority, std::strerror(e),
+                       e == EPERM ? ": needs root, CAP_SYS_NICE or an rtprio limit" : "");
     ok = false;
   }
   if (mlockall(MCL_CURRENT | MCL_FUTURE) != 0) {
     const int e = errno;
-    std::fprintf(stderr,
-                 "evade_guidance_node: --realtime: mlockall refused (%s%s); continuing "
-                 "without locked memory, page faults may delay cycles\n",
-                 std::strerror(e),
-                 (e == EPERM || e == ENOMEM) ? ": needs CAP_IPC_LOCK or a memlock limit" : "");
+    (void)std::fprintf(stderr,
+                       "evade_guidance_node: --realtime: mlockall refused (%s%s); continuing "
+                       "without locked memory, page faults may delay cycles\n",
+                       std::strerror(e),
+                       (e == EPERM || e == ENOMEM) ? ": needs CAP_IPC_LOCK or a memlock limit"
+                                                   : "");
     ok = false;
   }
   return ok;
 }
 
 LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, const LoopLimits& lim,
-                          volatile std::sig_atomic_t* stop) {
+                          const volatile std::sig_atomic_t* stop) {
   LoopResult res;
   if (lim.max_cycles > 0 && lim.max_cycles <= 10000000) {
     // Touched now (resize writes every element), so that recording a wake-up never faults a
@@ -85,7 +90,7 @@ LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, cons
     res.wakeup_us.resize(static_cast<std::size_t>(lim.max_cycles));
     res.wakeup_us.clear();
   }
-  const std::int64_t period_ns = static_cast<std::int64_t>(1e9 / rate_hz + 0.5);
+  const std::int64_t period_ns = std::llround(1e9 / rate_hz);
   std::int64_t deadline = now_ns(CLOCK_MONOTONIC) + period_ns;
   std::int64_t next_progress = deadline + 10 * kNsPerS;
   while (*stop == 0) {
@@ -124,7 +129,7 @@ LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, cons
 }
 
 LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, const LoopLimits& lim,
-                        volatile std::sig_atomic_t* stop) {
+                        const volatile std::sig_atomic_t* stop) {
   LoopResult res;
   std::int64_t last_tick = now_ns(CLOCK_MONOTONIC);
   std::int64_t next_progress = last_tick + 10 * kNsPerS;

@@ -29,9 +29,9 @@ struct LoopResult {
 
 /// Runs until stop != 0, max_cycles, or (lockstep) input end / idle timeout.
 LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, const LoopLimits& lim,
-                          volatile std::sig_atomic_t* stop);
+                          const volatile std::sig_atomic_t* stop);
 LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, const LoopLimits& lim,
-                        volatile std::sig_atomic_t* stop);
+                        const volatile std::sig_atomic_t* stop);
 
 /// SCHED_FIFO at priority and mlockall; says on stderr what was refused and continues.
 /// Returns true if both succeeded.

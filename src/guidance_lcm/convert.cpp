@@ -58,15 +58,15 @@ void from_lcm(const evade_guidance_status_t& m, guidance::GuidanceStatus* out) n
 void to_lcm(const guidance::AnglesMeasurement& a, std::int64_t seq, evade_angles_t* out) noexcept {
   out->utime = a.utime_us;
   out->seq = seq;
-  out->valid = a.valid;
+  out->valid = lcm_bool(a.valid);
   out->elevation_rad = a.elevation_rad;
   out->azimuth_rad = a.azimuth_rad;
   out->sigma_angle_rad = a.sigma_angle_rad;
-  out->has_rates = a.has_rates;
+  out->has_rates = lcm_bool(a.has_rates);
   out->elevation_rate_radps = a.elevation_rate_radps;
   out->azimuth_rate_radps = a.azimuth_rate_radps;
   out->sigma_rate_radps = a.sigma_rate_radps;
-  out->has_range = a.has_range;
+  out->has_range = lcm_bool(a.has_range);
   out->range_m = a.range_m;
   out->range_rate_mps = a.range_rate_mps;
   out->sigma_range_m = 0.0;         // not carried by AnglesMeasurement
@@ -76,7 +76,7 @@ void to_lcm(const guidance::AnglesMeasurement& a, std::int64_t seq, evade_angles
 void to_lcm(const guidance::NavState& n, std::int64_t seq, evade_nav_state_t* out) noexcept {
   out->utime = n.utime_us;
   out->seq = seq;
-  out->valid = n.valid;
+  out->valid = lcm_bool(n.valid);
   for (int i = 0; i < 3; ++i) {
     out->r_eci_m[i] = n.r_eci_m[i];
     out->v_eci_mps[i] = n.v_eci_mps[i];
@@ -97,14 +97,14 @@ void to_lcm(const guidance::ThrustCommand& c, std::int64_t seq, std::int64_t inp
 void to_lcm(const guidance::GuidanceStatus& s, evade_guidance_status_t* out) noexcept {
   out->mode = static_cast<std::int8_t>(s.mode);
   out->reason = static_cast<std::int16_t>(s.reason);
-  out->track_valid = s.track_valid;
+  out->track_valid = lcm_bool(s.track_valid);
   out->los_rate_radps = s.los_rate_radps;
   out->los_rate_var_rad2ps2 = s.los_rate_var_rad2ps2;
   for (int i = 0; i < 3; ++i) {
     out->e_theta_eci[i] = s.e_theta_eci[i];
     for (int j = 0; j < 3; ++j) out->e_theta_cov_eci[3 * i + j] = s.e_theta_cov_eci(i, j);
   }
-  out->has_range = s.zem_valid && s.t_go_valid;
+  out->has_range = lcm_bool(s.zem_valid && s.t_go_valid);
   out->zem_m = s.zem_valid ? s.zem_m : 0.0;
   out->t_go_s = s.t_go_valid ? s.t_go_s : 0.0;
   out->dv_used_mps = s.dv_used_mps;

@@ -45,8 +45,8 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
       status_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanStatus) {
   if (lcm_ == nullptr) throw std::invalid_argument("GuidanceNode: lcm is null");
   const char* names[kInCount] = {kChanAngles, kChanNav, kChanArm};
-  for (int c = 0; c < kInCount; ++c) {
-    ctx_[c] = SubContext{this, c};
+  for (std::size_t c = 0; c < ctx_.size(); ++c) {
+    ctx_[c] = SubContext{this, static_cast<int>(c)};  // c < kInCount: fits in int
     subs_[c] = subscribe(names[c], &GuidanceNode::on_input, &ctx_[c]);
     // LCM's own per-subscription queue (udpm default 30) would drop bursts silently before
     // our accounting sees them; make it large so the bounded queue we count is ours.
@@ -304,7 +304,7 @@ const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept 
     to_lcm(law_.status(), &status_msg_);
     status_msg_.utime = now_us;
     status_msg_.seq = ++status_seq_;
-    status_msg_.armed = armed_;
+    status_msg_.armed = lcm_bool(armed_);
     status_msg_.n_received = counts_.received;
     status_msg_.n_consumed = counts_.consumed;
     status_msg_.n_rejected = counts_.rejected;

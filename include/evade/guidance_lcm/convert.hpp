@@ -15,6 +15,10 @@
 
 namespace evade::guidance_lcm {
 
+/// An LCM `boolean` field (lcm-gen declares it int8_t, 0 or 1) from a bool, without the
+/// implicit bool -> signed char conversion.
+constexpr std::int8_t lcm_bool(bool b) noexcept { return b ? std::int8_t{1} : std::int8_t{0}; }
+
 void from_lcm(const evade_angles_t& m, guidance::AnglesMeasurement* out) noexcept;
 void from_lcm(const evade_nav_state_t& m, guidance::NavState* out) noexcept;
 void from_lcm(const evade_thrust_cmd_t& m, guidance::ThrustCommand* out) noexcept;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -29,7 +30,7 @@ class CycleStats {
     std::copy(ring_.begin(), ring_.begin() + static_cast<std::ptrdiff_t>(filled_),
               scratch_.begin());
     double pos = q * static_cast<double>(filled_ - 1);
-    std::size_t k = static_cast<std::size_t>(pos + 0.5);
+    std::size_t k = static_cast<std::size_t>(std::lround(pos));  // pos >= 0 for q in 0..1
     if (k >= filled_) k = filled_ - 1;
     std::nth_element(scratch_.begin(), scratch_.begin() + static_cast<std::ptrdiff_t>(k),
                      scratch_.begin() + static_cast<std::ptrdiff_t>(filled_));
