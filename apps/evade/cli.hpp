@@ -2,20 +2,29 @@
 //
 // A command lives in apps/evade/cmd_<name>.cpp and registers itself at static-init time:
 //
-//   static const bool kRegistered = evade::cli::register_command(
-//       {"plan", "observability"}, "Observability-minimizing burn (paper 004)",
-//       [](CLI::App& app) {
-//         auto opts = std::make_shared<MyOptions>();
-//         evade::cli::add_common_options(app, opts->common);
-//         app.add_option("--seed", opts->seed, "...");
-//         return [opts]() { return run_my_command(*opts); };   // returns the exit code
-//       });
+//   evade::cli::Runner setup(CLI::App& app) {
+//     auto opts = std::make_shared<MyOptions>();
+//     evade::cli::add_common_options(app, opts->common);
+//     app.add_option("--seed", opts->seed, "...");
+//     return [opts]() { return run_my_command(*opts); };   // returns the exit code
+//   }
+//   const bool kRegistered = evade::cli::register_command(
+//       {{"plan", "observability"}, "Observability-minimizing burn (paper 004)", &setup});
+//
+// The registration is plain pointers into a fixed table, so static initialization cannot
+// throw (an exception there would end the process before main could report it); setup
+// runs, and may throw, from main.
+//
+// Diagnostics and progress go to stderr as `(void)std::fprintf(stderr, ...)`: a failed print
+// there has no recovery (there is nowhere else to report it) and must not change a command's
+// result, so its return value is discarded explicitly.
 //
 // Exit codes: 0 success; 1 runtime failure; 2 bad input (config::ConfigError or
 // std::invalid_argument thrown by the command, or a CLI11 parse error) — the message names
 // the key, the value and what is allowed.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -36,12 +45,19 @@ struct CommonOptions {
 };
 
 using Runner = std::function<int()>;
-using Setup = std::function<Runner(CLI::App&)>;
+/// Adds a command's options to its subcommand; returns what runs the command.
+using Setup = Runner (*)(CLI::App&);
 
-/// Registers a command at `path` (e.g. {"sim"} or {"plan", "threat-area"}). Returns true so
-/// it can initialize a static.
-bool register_command(const std::vector<std::string>& path, const std::string& description,
-                      Setup setup);
+/// One command of the CLI, as registered (string literals and a function: no allocation).
+struct Command {
+  std::array<const char*, 2> path;  ///< {"sim"} or {"plan", "threat-area"} (group, name)
+  const char* description;
+  Setup setup;
+};
+
+/// Registers a command. Returns true so it can initialize a static; false if the table is
+/// full (main then refuses to run and says so).
+bool register_command(const Command& command) noexcept;
 
 /// Adds --scenario (required unless default_scenario is given), --set and --json.
 void add_common_options(CLI::App& app, CommonOptions& opts,

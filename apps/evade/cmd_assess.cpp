@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "number_list.hpp"
 #include "evade/assessment/assess.hpp"
 #include "evade/assessment/conjunction_input.hpp"
 #include "evade/config/read_params.hpp"
@@ -46,10 +47,8 @@ nlohmann::json plane_json(const EncounterPlane* ep, const PrincipalEncounter& pe
 }
 
 nlohmann::json run_plane(const Options& o) {
-  double v[5];
-  char tail = 0;
-  if (std::sscanf(o.plane.c_str(), "%lf,%lf,%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &v[3], &v[4],
-                  &tail) != 5) {
+  const std::vector<double> v = parse_number_list(o.plane, ',');
+  if (v.size() != 5) {
     throw std::invalid_argument("--encounter-plane: expected MISS_X_M,MISS_Y_M,SIGMA_X_M,"
                                 "SIGMA_Y_M,HBR_M, found '" + o.plane + "'");
   }
@@ -143,20 +142,21 @@ int run(const Options& o) {
   return 0;
 }
 
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.add_option("--scenario", o->scenario, "scenario with a conjunction: block");
+  app.add_option("--cdm", o->cdm, "a CCSDS CDM file (KVN or XML)");
+  app.add_option("--encounter-plane", o->plane, "MISS_X_M,MISS_Y_M,SIGMA_X_M,SIGMA_Y_M,HBR_M");
+  app.add_option("--set", o->sets, "override a scenario key (repeatable)");
+  app.add_option("--hbr-m", o->hbr_m, "hard-body radius for --cdm [m]")->check(CLI::PositiveNumber);
+  app.add_option("--mc", o->mc, "Monte Carlo samples")->check(CLI::Range(1L, 100000000L));
+  app.add_option("--seed", o->seed, "Monte Carlo seed")->capture_default_str();
+  app.add_flag("--json", o->json, "print a machine-readable JSON result on stdout");
+  return [o]() { return run(*o); };
+}
+
 const bool kRegistered = register_command(
-    {"assess"}, "Collision probability of one conjunction (2D, Chan, max, Monte Carlo)",
-    [](CLI::App& app) {
-      auto o = std::make_shared<Options>();
-      app.add_option("--scenario", o->scenario, "scenario with a conjunction: block");
-      app.add_option("--cdm", o->cdm, "a CCSDS CDM file (KVN or XML)");
-      app.add_option("--encounter-plane", o->plane, "MISS_X_M,MISS_Y_M,SIGMA_X_M,SIGMA_Y_M,HBR_M");
-      app.add_option("--set", o->sets, "override a scenario key (repeatable)");
-      app.add_option("--hbr-m", o->hbr_m, "hard-body radius for --cdm [m]")->check(CLI::PositiveNumber);
-      app.add_option("--mc", o->mc, "Monte Carlo samples")->check(CLI::Range(1L, 100000000L));
-      app.add_option("--seed", o->seed, "Monte Carlo seed")->capture_default_str();
-      app.add_flag("--json", o->json, "print a machine-readable JSON result on stdout");
-      return [o]() { return run(*o); };
-    });
+    {{"assess"}, "Collision probability of one conjunction (2D, Chan, max, Monte Carlo)", &setup});
 
 }  // namespace
 }  // namespace evade::cli

@@ -2,6 +2,7 @@
 // modules' parameter tables, as the Markdown of docs/PARAMETERS.md. The tables are the
 // single source; ctest fails when the committed docs/PARAMETERS.md differs from this output.
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "cli.hpp"
@@ -69,13 +70,17 @@ std::string parameters_markdown() {
   return md;
 }
 
+Runner setup(CLI::App&) {
+  return []() {
+    // The Markdown is the command's product: a failed write is a failure (exit 1).
+    if (std::fputs(parameters_markdown().c_str(), stdout) == EOF)
+      throw std::runtime_error("cannot write the parameters to stdout");
+    return 0;
+  };
+}
+
 const bool kRegistered = register_command(
-    {"params"}, "Every declared parameter as Markdown (docs/PARAMETERS.md)", [](CLI::App&) {
-      return []() {
-        std::fputs(parameters_markdown().c_str(), stdout);
-        return 0;
-      };
-    });
+    {{"params"}, "Every declared parameter as Markdown (docs/PARAMETERS.md)", &setup});
 
 }  // namespace
 }  // namespace evade::cli

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "number_list.hpp"
 #include "plan_output.hpp"
 #include "evade/assessment/cam_burn_plan.hpp"
 #include "evade/assessment/cam_planner.hpp"
@@ -97,19 +98,20 @@ nlohmann::json plan_json(const CamPlan& p, const Inputs& in) {
 }
 
 std::vector<double> parse_sweep(const std::string& text, const CamRequest& req, const CamConfig& cfg) {
-  double a = 0.0, b = 0.0;
-  int n = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%lf:%lf:%d%c", &a, &b, &n, &tail) != 3 || n < 1 || n > 10000 ||
-      !(a <= b))
+  const std::vector<double> v = parse_number_list(text, ':');
+  if (v.size() != 3 || !(v[2] >= 1.0 && v[2] <= 10000.0 && v[2] == std::floor(v[2])) ||
+      !(v[0] <= v[1]))
     throw std::invalid_argument("--sweep-lead: expected A:B:N with A <= B and N in [1, 10000], found '" +
                                 text + "'");
+  const double a = v[0], b = v[1];
+  const int n = static_cast<int>(v[2]);  // an integer in [1, 10000], checked above
   for (const double lead : {a, b}) {
     CamRequest r = req;
     r.lead_s = lead;
     validate_cam_request(r, cfg);
   }
   std::vector<double> leads;
+  leads.reserve(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) leads.push_back(n == 1 ? a : a + (b - a) * k / (n - 1));
   return leads;
 }
@@ -174,30 +176,31 @@ int run(const Options& o) {
   }
   if (o.json) print_json(j); else print_text(p, in);
   if (!p.verified_ok) {
-    std::fprintf(stderr, "plan cam: the verification by propagation does not meet the request (Pc %.6e, miss %.3f m)\n",
-                 p.verified.pc, p.verified.miss_m);
+    (void)std::fprintf(stderr, "plan cam: the verification by propagation does not meet the request (Pc %.6e, miss %.3f m)\n",
+                       p.verified.pc, p.verified.miss_m);
     return 1;
   }
   return 0;
 }
 
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  app.add_option("--scenario", o->scenario, "scenario with a conjunction: block");
+  app.add_option("--cdm", o->cdm, "a CCSDS CDM file (KVN or XML)");
+  app.add_option("--set", o->sets, "override a scenario key (repeatable)");
+  app.add_option("--hbr-m", o->hbr_m, "hard-body radius for --cdm [m]")->check(CLI::PositiveNumber);
+  app.add_option("--lead-s", o->req.lead_s, "burn time before TCA [s]");
+  app.add_option("--pc-max", o->req.pc_max, "Pc threshold")->capture_default_str();
+  app.add_option("--min-miss-m", o->req.min_miss_m, "smallest miss distance after the burn [m]");
+  app.add_flag("--along-track-only", o->req.along_track_only, "burn along track only");
+  app.add_option("--sweep-lead", o->sweep, "A:B:N: plan at N lead times from A to B s (trade space)");
+  add_plan_output_options(app, o->out);
+  app.add_flag("--json", o->json, "print a machine-readable JSON result on stdout");
+  return [o]() { return run(*o); };
+}
+
 const bool kRegistered = register_command(
-    {"plan", "cam"}, "Minimum-dv collision-avoidance burn for a Pc threshold (issue 12)",
-    [](CLI::App& app) {
-      auto o = std::make_shared<Options>();
-      app.add_option("--scenario", o->scenario, "scenario with a conjunction: block");
-      app.add_option("--cdm", o->cdm, "a CCSDS CDM file (KVN or XML)");
-      app.add_option("--set", o->sets, "override a scenario key (repeatable)");
-      app.add_option("--hbr-m", o->hbr_m, "hard-body radius for --cdm [m]")->check(CLI::PositiveNumber);
-      app.add_option("--lead-s", o->req.lead_s, "burn time before TCA [s]");
-      app.add_option("--pc-max", o->req.pc_max, "Pc threshold")->capture_default_str();
-      app.add_option("--min-miss-m", o->req.min_miss_m, "smallest miss distance after the burn [m]");
-      app.add_flag("--along-track-only", o->req.along_track_only, "burn along track only");
-      app.add_option("--sweep-lead", o->sweep, "A:B:N: plan at N lead times from A to B s (trade space)");
-      add_plan_output_options(app, o->out);
-      app.add_flag("--json", o->json, "print a machine-readable JSON result on stdout");
-      return [o]() { return run(*o); };
-    });
+    {{"plan", "cam"}, "Minimum-dv collision-avoidance burn for a Pc threshold (issue 12)", &setup});
 
 }  // namespace
 }  // namespace evade::cli

@@ -218,17 +218,19 @@ int run_plan_formation(const PlanFormationOptions& o) {
   return 0;
 }
 
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<PlanFormationOptions>();
+  add_common_options(app, o->common, "seed3");
+  app.add_flag("--numerical-limits", o->numerical_limits,
+               "also compute Table 1 by bisection on propagated margins (slower)");
+  add_plan_output_options(app, o->out);
+  return [o]() { return run_plan_formation(*o); };
+}
+
 const bool kRegistered = register_command(
-    {"plan", "formation"},
-    "Formation collision avoidance by a small semi-major-axis change (paper 003)",
-    [](CLI::App& app) {
-      auto o = std::make_shared<PlanFormationOptions>();
-      add_common_options(app, o->common, "seed3");
-      app.add_flag("--numerical-limits", o->numerical_limits,
-                   "also compute Table 1 by bisection on propagated margins (slower)");
-      add_plan_output_options(app, o->out);
-      return [o]() { return run_plan_formation(*o); };
-    });
+    {{"plan", "formation"},
+     "Formation collision avoidance by a small semi-major-axis change (paper 003)",
+     &setup});
 
 }  // namespace
 }  // namespace evade::cli

@@ -142,12 +142,12 @@ nlohmann::json summary_json(const DirectionSummary& d) {
 double plan_timed(const SampledProblem& s, ObjectiveKind kind, Inputs* in, PlanResult* res) {
   in->isres.progress_every = kind == ObjectiveKind::kEstimation ? 100 : 1000;
   in->isres.progress = [](int n, double best) {
-    std::fprintf(stderr, "plan observability: %d evaluations, best %.9g\n", n, best);
+    (void)std::fprintf(stderr, "plan observability: %d evaluations, best %.9g\n", n, best);
   };
   const auto t0 = std::chrono::steady_clock::now();
   *res = plan_isres(s, kind, in->estimation, in->isres);
   const double runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::fprintf(stderr, "plan observability: done, %d evaluations in %.3f s\n", res->evaluations, runtime_s);
+  (void)std::fprintf(stderr, "plan observability: done, %d evaluations in %.3f s\n", res->evaluations, runtime_s);
   return runtime_s;
 }
 
@@ -217,18 +217,19 @@ int run(const Options& o) {
   return 0;
 }
 
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  add_common_options(app, o->common, "seed4");
+  app.add_option("--objective", o->objective, "paper | los-change | estimation (default: scenario)")
+      ->check(CLI::IsMember({"paper", "los-change", "estimation"}));
+  app.add_option("--seed", o->seed, "ISRES seed (default: scenario isres.seed)")
+      ->check(CLI::Range(0L, 2147483647L));
+  add_plan_output_options(app, o->out);
+  return [o]() { return run(*o); };
+}
+
 const bool kRegistered = register_command(
-    {"plan", "observability"}, "Observability-minimizing evasive burn (paper 004)",
-    [](CLI::App& app) {
-      auto o = std::make_shared<Options>();
-      add_common_options(app, o->common, "seed4");
-      app.add_option("--objective", o->objective, "paper | los-change | estimation (default: scenario)")
-          ->check(CLI::IsMember({"paper", "los-change", "estimation"}));
-      app.add_option("--seed", o->seed, "ISRES seed (default: scenario isres.seed)")
-          ->check(CLI::Range(0L, 2147483647L));
-      add_plan_output_options(app, o->out);
-      return [o]() { return run(*o); };
-    });
+    {{"plan", "observability"}, "Observability-minimizing evasive burn (paper 004)", &setup});
 
 }  // namespace
 }  // namespace evade::cli

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "run_program.hpp"
 #include "evade/threat/burn_plan.hpp"
 #include "plan_output.hpp"
 #include "evade/threat/threat_scenario.hpp"
@@ -191,32 +192,32 @@ nlohmann::json study_json(const config::Scenario& sc, const ThreatScenario& in,
 }
 
 void progress_elim(double lo, double hi) {
-  std::fprintf(stderr, "  eliminating V_E in [%.3f, %.3f] m/s\n", lo, hi);
+  (void)std::fprintf(stderr, "  eliminating V_E in [%.3f, %.3f] m/s\n", lo, hi);
 }
 
 // Progress lines on stderr as each step finishes.
 ThreatStudyProgress stderr_progress() {
   ThreatStudyProgress p;
   p.optimizing = [](double dv_mps, int evals) {
-    std::fprintf(stderr, "threat-area: optimizing the burn direction at V_E = %.3f m/s (<= %d evals)\n",
-                 dv_mps, evals);
+    (void)std::fprintf(stderr, "threat-area: optimizing the burn direction at V_E = %.3f m/s (<= %d evals)\n",
+                       dv_mps, evals);
   };
   p.eliminating = [](double tol_mps) {
-    std::fprintf(stderr, "threat-area: bisection for the eliminating V_E (tol %.3f m/s)\n",
-                 tol_mps);
+    (void)std::fprintf(stderr, "threat-area: bisection for the eliminating V_E (tol %.3f m/s)\n",
+                       tol_mps);
   };
   p.bisection = progress_elim;
   p.burn_row = [](const BurnSweepRow& row) {
     const EvasionResult& q = row.evasion;
-    std::fprintf(stderr, "  V_E = %8.3f m/s: arc %9.2f s (%7.3f deg), alpha %.4f theta %.4f\n",
-                 q.dv_mps, q.area.arc_s, q.area.arc_deg, q.alpha_rad, q.theta_rad);
+    (void)std::fprintf(stderr, "  V_E = %8.3f m/s: arc %9.2f s (%7.3f deg), alpha %.4f theta %.4f\n",
+                       q.dv_mps, q.area.arc_s, q.area.arc_deg, q.alpha_rad, q.theta_rad);
   };
   p.transfer_row = [](const TransferStudyRow& r) {
     const std::string elim =
         r.elimination ? ", eliminating " + std::to_string(r.elimination->eliminating_dv_mps) + " m/s"
                       : "";
-    std::fprintf(stderr, "  dT = %7.1f s: J(t0) = %.3f m/s, bound %.3f m/s%s\n", r.dt_transfer_s,
-                 r.j_t0_mps, r.t0_bound_mps, elim.c_str());
+    (void)std::fprintf(stderr, "  dT = %7.1f s: J(t0) = %.3f m/s, bound %.3f m/s%s\n", r.dt_transfer_s,
+                       r.j_t0_mps, r.t0_bound_mps, elim.c_str());
   };
   return p;
 }
@@ -226,7 +227,7 @@ std::string find_plot_script() {
     return std::string(env) + "/plot_threat.py";
   }
   for (const auto& d : config::scenario_search_dirs()) {
-    const std::string p = d + "/../scripts/plot_threat.py";
+    std::string p = d + "/../scripts/plot_threat.py";  // not const: returned by move
     if (std::ifstream(p).good()) return p;
   }
   return "scripts/plot_threat.py";
@@ -236,13 +237,12 @@ std::string find_plot_script() {
 bool write_plot(const std::string& png, const nlohmann::json& j) {
   const std::string tmp = png + ".json";
   std::ofstream(tmp) << j.dump(2) << "\n";
-  const std::string cmd =
-      "python3 '" + find_plot_script() + "' '" + tmp + "' '" + png + "'";
-  if (std::system(cmd.c_str()) != 0) {
-    std::fprintf(stderr, "threat-area: plot failed: %s\n", cmd.c_str());
+  const std::vector<std::string> argv = {"python3", find_plot_script(), tmp, png};
+  if (run_program(argv, false) != 0) {
+    (void)std::fprintf(stderr, "threat-area: plot failed: %s\n", command_line(argv).c_str());
     return false;
   }
-  std::fprintf(stderr, "threat-area: wrote %s (data %s)\n", png.c_str(), tmp.c_str());
+  (void)std::fprintf(stderr, "threat-area: wrote %s (data %s)\n", png.c_str(), tmp.c_str());
   return true;
 }
 
@@ -289,27 +289,29 @@ int run_threat_area(const ThreatCmdOptions& o) {
   return 0;
 }
 
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<ThreatCmdOptions>();
+  add_common_options(app, o->common);
+  o->dv_opt = app.add_option("--dv", o->dv_mps, "evasion burn magnitude V_E [m/s]");
+  o->dt_opt = app.add_option("--dt-transfer", o->dt_transfer_s, "chaser transfer time [s]");
+  o->imp_opt = app.add_option("--impulses", o->impulses, "chaser impulses N (2..4)");
+  o->seed_opt = app.add_option("--seed", o->seed, "seed: ISRES RNG / the sweep's sample position in each cell");
+  app.add_flag("--eliminate", o->eliminate, "find the smallest V_E with no threat area");
+  app.add_option("--sweep-dv", o->sweep_dv, "list of V_E [m/s]: arc for each (Fig. 8)")
+      ->delimiter(',');
+  app.add_option("--sweep-transfer", o->sweep_transfer,
+                 "list of transfer times [s] (Fig. 4; with --eliminate: eliminating V_E)")
+      ->delimiter(',');
+  app.add_option("--plot", o->plot, "PNG file for the sweep plots (scripts/plot_threat.py)");
+  add_plan_output_options(app, o->out);
+  return [o]() { return run_threat_area(*o); };
+}
+
 const bool kRegistered = register_command(
-    {"plan", "threat-area"},
-    "Threat-area evasive burn (paper 001): potential threat area, optimal direction, "
-    "eliminating burn",
-    [](CLI::App& app) {
-      auto o = std::make_shared<ThreatCmdOptions>();
-      add_common_options(app, o->common);
-      o->dv_opt = app.add_option("--dv", o->dv_mps, "evasion burn magnitude V_E [m/s]");
-      o->dt_opt = app.add_option("--dt-transfer", o->dt_transfer_s, "chaser transfer time [s]");
-      o->imp_opt = app.add_option("--impulses", o->impulses, "chaser impulses N (2..4)");
-      o->seed_opt = app.add_option("--seed", o->seed, "seed: ISRES RNG / the sweep's sample position in each cell");
-      app.add_flag("--eliminate", o->eliminate, "find the smallest V_E with no threat area");
-      app.add_option("--sweep-dv", o->sweep_dv, "list of V_E [m/s]: arc for each (Fig. 8)")
-          ->delimiter(',');
-      app.add_option("--sweep-transfer", o->sweep_transfer,
-                     "list of transfer times [s] (Fig. 4; with --eliminate: eliminating V_E)")
-          ->delimiter(',');
-      app.add_option("--plot", o->plot, "PNG file for the sweep plots (scripts/plot_threat.py)");
-      add_plan_output_options(app, o->out);
-      return [o]() { return run_threat_area(*o); };
-    });
+    {{"plan", "threat-area"},
+     "Threat-area evasive burn (paper 001): potential threat area, optimal direction, "
+     "eliminating burn",
+     &setup});
 
 }  // namespace
 }  // namespace evade::cli

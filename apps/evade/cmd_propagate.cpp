@@ -143,14 +143,17 @@ void add_catalog_options(CLI::App& app, CatalogPropagateOptions& c) {
   app.add_option("--frame", c.frame, "with --tle/--omm: teme or eci (J2000)");
 }
 
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<PropagateOptions>();
+  add_common_options(app, o->common, "demo-leo");
+  add_catalog_options(app, o->catalog);
+  return [o]() { return run_propagate(*o); };
+}
+
 const bool kRegistered = register_command(
-    {"propagate"}, "Propagate one orbit (two-body or two-body + J2): the foundation demo",
-    [](CLI::App& app) {
-      auto o = std::make_shared<PropagateOptions>();
-      add_common_options(app, o->common, "demo-leo");
-      add_catalog_options(app, o->catalog);
-      return [o]() { return run_propagate(*o); };
-    });
+    {{"propagate"},
+     "Propagate one orbit (two-body or two-body + J2): the foundation demo",
+     &setup});
 
 }  // namespace
 }  // namespace evade::cli

@@ -48,7 +48,7 @@ nlohmann::json propagate_object(const sgp4::MeanElements& m, double start_j2000_
   const double offset_s = start_j2000_s - sgp4::epoch_seconds_since_j2000(m);
   const long n = static_cast<long>(o.span_s / o.step_s + 1e-9);
   for (long k = 0; k <= n; ++k) {
-    const double t_s = std::min(k * o.step_s, o.span_s);
+    const double t_s = std::min(static_cast<double>(k) * o.step_s, o.span_s);
     const sgp4::Sgp4State s = prop.propagate_s(offset_s + t_s);
     if (s.error != sgp4::Sgp4Error::kNone) {
       obj["sgp4_error"] = {{"t_s", t_s}, {"code", static_cast<int>(s.error)}, {"text", sgp4::sgp4_error_text(s.error)}};
@@ -84,7 +84,7 @@ void print_text(const nlohmann::json& j) {
 int run_propagate_catalog(const CatalogPropagateOptions& o) {
   check_options(o);
   const sgp4::Catalog cat = read_catalog_file(o.tle_path, o.omm_path);
-  for (const auto& is : cat.issues) std::fprintf(stderr, "evade propagate: bad entry: %s\n", is.message().c_str());
+  for (const auto& is : cat.issues) (void)std::fprintf(stderr, "evade propagate: bad entry: %s\n", is.message().c_str());
   if (cat.objects.empty())
     throw std::invalid_argument("no valid element set in the file (" + std::to_string(cat.bad_entries) + " bad entries)");
   double start_s = sgp4::epoch_seconds_since_j2000(cat.objects[0]);

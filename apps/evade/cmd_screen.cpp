@@ -120,9 +120,9 @@ std::vector<Conjunction> run_paper(const Options& o, const ScreenScenario& in,
   }
   Ephemeris eph(objects, in.gravity, in.earth, in.robust.integ);
   std::function<void(double)> progress;
-  if (!o.quiet) progress = [](double f) { std::fprintf(stderr, "\rscreen (paper): %5.1f %%", 100.0 * f); };
+  if (!o.quiet) progress = [](double f) { (void)std::fprintf(stderr, "\rscreen (paper): %5.1f %%", 100.0 * f); };
   const PaperResult r = screen_paper(objects, in.span_s, in.paper_step, eph, o.trace, progress);
-  if (!o.quiet) std::fprintf(stderr, "\n");
+  if (!o.quiet) (void)std::fprintf(stderr, "\n");
   out["steps"] = r.steps;
   if (o.trace) out["trace"] = trace_json(r.trace, in.epoch_j2000_s);
   return r.events;
@@ -151,13 +151,13 @@ std::vector<Conjunction> run_robust(const Options& o, const ScreenScenario& in,
   so.threads = o.threads > 0 ? o.threads
                              : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (!o.quiet && mpi.rank() == 0) {
-    std::fprintf(stderr, "screen: %zu objects, %.0f s, threshold %.1f m, step %.1f s, %d threads, %d ranks\n",
-                 objects.size(), in.span_s, so.threshold_m,
-                 so.step_s > 0.0 ? so.step_s : auto_step_s(objects.size()), so.threads, mpi.size());
-    so.progress = [](double f) { std::fprintf(stderr, "\rscreen: %5.1f %%", 100.0 * f); };
+    (void)std::fprintf(stderr, "screen: %zu objects, %.0f s, threshold %.1f m, step %.1f s, %d threads, %d ranks\n",
+                       objects.size(), in.span_s, so.threshold_m,
+                       so.step_s > 0.0 ? so.step_s : auto_step_s(objects.size()), so.threads, mpi.size());
+    so.progress = [](double f) { (void)std::fprintf(stderr, "\rscreen: %5.1f %%", 100.0 * f); };
   }
   const ScreenResult r = distributed::screen_distributed(objects, in.span_s, so, mpi);
-  if (!o.quiet && mpi.rank() == 0) std::fprintf(stderr, "\n");
+  if (!o.quiet && mpi.rank() == 0) (void)std::fprintf(stderr, "\n");
   out["steps"] = r.stats.steps;
   out["stats"] = stats_json(r.stats, objects.size(), so, mpi.size());
   return r.events;
@@ -254,36 +254,39 @@ int run(const Options& o) {
   return 0;
 }
 
+Runner setup(CLI::App& app) {
+  auto o = std::make_shared<Options>();
+  add_common_options(app, o->common, "seed2");
+  app.add_option("--method", o->method, "paper (adaptive Step rule) or robust (no misses)")
+      ->check(CLI::IsMember({"paper", "robust"}))
+      ->capture_default_str();
+  app.add_flag("--trace", o->trace, "record every sample of the paper method (Table 2 rows)");
+  app.add_option("--csv", o->csv_path, "also write the events to this CSV file");
+  app.add_option("--objects", o->objects_csv, "read the objects from a CSV file");
+  app.add_option("--population", o->population, "screen a synthetic LEO population of N objects")
+      ->check(CLI::Range(2L, 10000000L));
+  app.add_option("--seed", o->seed, "seed of the synthetic population")->capture_default_str();
+  app.add_option("--threads", o->threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 256));
+  app.add_flag("--quiet", o->quiet, "no progress on stderr");
+  CatalogScreenOptions& c = o->catalog;
+  auto* tle = app.add_option("--tle", c.tle_path, "TLE/3LE file: screen the catalog with SGP4 motion");
+  auto* omm = app.add_option("--omm", c.omm_path, "CCSDS OMM (KVN or XML) or GP JSON/CSV file, as --tle");
+  tle->excludes(omm);
+  app.add_option("--primary", c.primary_norad, "with --tle/--omm: screen this NORAD id against the catalog");
+  app.add_option("--span-s", c.span_s, "with --tle/--omm: span from the start (s)")->capture_default_str();
+  app.add_option("--threshold-m", c.threshold_m, "with --tle/--omm: report misses <= D (m)")
+      ->capture_default_str();
+  app.add_option("--step-s", c.step_s, "with --tle/--omm: grid step (s; 0 = automatic)");
+  app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
+  add_cdm_out_options(app, c.cdm);
+  return [o]() { return run(*o); };
+}
+
 const bool kRegistered = register_command(
-    {"screen"}, "Conjunction screening among many objects (paper 002; adaptive or robust)",
-    [](CLI::App& app) {
-      auto o = std::make_shared<Options>();
-      add_common_options(app, o->common, "seed2");
-      app.add_option("--method", o->method, "paper (adaptive Step rule) or robust (no misses)")
-          ->check(CLI::IsMember({"paper", "robust"}))
-          ->capture_default_str();
-      app.add_flag("--trace", o->trace, "record every sample of the paper method (Table 2 rows)");
-      app.add_option("--csv", o->csv_path, "also write the events to this CSV file");
-      app.add_option("--objects", o->objects_csv, "read the objects from a CSV file");
-      app.add_option("--population", o->population, "screen a synthetic LEO population of N objects")
-          ->check(CLI::Range(2L, 10000000L));
-      app.add_option("--seed", o->seed, "seed of the synthetic population")->capture_default_str();
-      app.add_option("--threads", o->threads, "worker threads (default: all cores)")
-          ->check(CLI::Range(1, 256));
-      app.add_flag("--quiet", o->quiet, "no progress on stderr");
-      CatalogScreenOptions& c = o->catalog;
-      auto* tle = app.add_option("--tle", c.tle_path, "TLE/3LE file: screen the catalog with SGP4 motion");
-      auto* omm = app.add_option("--omm", c.omm_path, "CCSDS OMM (KVN or XML) or GP JSON/CSV file, as --tle");
-      tle->excludes(omm);
-      app.add_option("--primary", c.primary_norad, "with --tle/--omm: screen this NORAD id against the catalog");
-      app.add_option("--span-s", c.span_s, "with --tle/--omm: span from the start (s)")->capture_default_str();
-      app.add_option("--threshold-m", c.threshold_m, "with --tle/--omm: report misses <= D (m)")
-          ->capture_default_str();
-      app.add_option("--step-s", c.step_s, "with --tle/--omm: grid step (s; 0 = automatic)");
-      app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
-      add_cdm_out_options(app, c.cdm);
-      return [o]() { return run(*o); };
-    });
+    {{"screen"},
+     "Conjunction screening among many objects (paper 002; adaptive or robust)",
+     &setup});
 
 }  // namespace
 }  // namespace evade::cli

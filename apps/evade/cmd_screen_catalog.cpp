@@ -95,7 +95,7 @@ void print_text(const nlohmann::json& j) {
 int run_screen_catalog(const CatalogScreenOptions& o) {
   check_options(o);
   const sgp4::Catalog cat = read_catalog_file(o.tle_path, o.omm_path);
-  for (const auto& is : cat.issues) std::fprintf(stderr, "evade screen: bad entry: %s\n", is.message().c_str());
+  for (const auto& is : cat.issues) (void)std::fprintf(stderr, "evade screen: bad entry: %s\n", is.message().c_str());
   Sgp4MotionOptions mo;
   mo.span_s = o.span_s;
   if (!o.start_utc.empty()) {
@@ -105,7 +105,7 @@ int run_screen_catalog(const CatalogScreenOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const Sgp4Screening s = sgp4_screening(cat.objects, mo);
   const auto t1 = std::chrono::steady_clock::now();
-  for (const auto& r : s.rejected) std::fprintf(stderr, "evade screen: rejected: %s\n", r.message().c_str());
+  for (const auto& r : s.rejected) (void)std::fprintf(stderr, "evade screen: rejected: %s\n", r.message().c_str());
   if (s.objects.size() < 2)
     throw std::invalid_argument("fewer than two usable element sets (" + std::to_string(cat.bad_entries) +
                                 " bad entries, " + std::to_string(s.rejected.size()) + " rejected)");
@@ -118,10 +118,10 @@ int run_screen_catalog(const CatalogScreenOptions& o) {
   so.step_s = o.step_s;
   so.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   so.primary = primary_index(o, s);
-  if (!o.quiet) so.progress = [](double f) { std::fprintf(stderr, "\rscreen: %5.1f %%", 100.0 * f); };
+  if (!o.quiet) so.progress = [](double f) { (void)std::fprintf(stderr, "\rscreen: %5.1f %%", 100.0 * f); };
   const ScreenResult r = screen_robust(s.objects, o.span_s, so);
   const auto t2 = std::chrono::steady_clock::now();
-  if (!o.quiet) std::fprintf(stderr, "\n");
+  if (!o.quiet) (void)std::fprintf(stderr, "\n");
   nlohmann::json j;
   j["command"] = "screen";
   j["motion"] = "sgp4";

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "run_program.hpp"
 #include "sim_plan.hpp"
 #include "evade/distributed/distributed_monte_carlo.hpp"
 #include "evade/guidance/guidance_law.hpp"
@@ -158,12 +159,12 @@ sim::SimResult simulate(const SimOptions& o, const sim::SimConfig& cfg,
 sim::RealtimeResult simulate_realtime(const SimOptions& o, const sim::SimConfig& cfg) {
   const std::unique_ptr<sim::RealtimeLink> link = lcm_link::make_realtime_lcm_link(o.lcm_url);
   std::ofstream csv;
-  const sim::RealtimeResult r = sim::run_realtime_simulation(cfg, *link, csv_writer(o, csv));
+  sim::RealtimeResult r = sim::run_realtime_simulation(cfg, *link, csv_writer(o, csv));
   if (r.late_steps > 0) {
-    std::fprintf(stderr,
-                 "evade sim: fell behind the wall clock in %ld of %ld steps (by more than "
-                 "realtime.late_tolerance_s = %g s; worst %.3f ms); time was not slowed\n",
-                 r.late_steps, r.steps, cfg.realtime.late_tolerance_s, r.late_max_ms);
+    (void)std::fprintf(stderr,
+                       "evade sim: fell behind the wall clock in %ld of %ld steps (by more than "
+                       "realtime.late_tolerance_s = %g s; worst %.3f ms); time was not slowed\n",
+                       r.late_steps, r.steps, cfg.realtime.late_tolerance_s, r.late_max_ms);
   }
   return r;
 }
@@ -226,7 +227,7 @@ bool add_monte_carlo(const SimOptions& o, const sim::SimConfig& cfg, nlohmann::j
   auto progress = [&mu](int done, int total) {
     std::lock_guard<std::mutex> lock(mu);
     if (done == total || done % std::max(1, total / 20) == 0) {
-      std::fprintf(stderr, "evade sim: monte carlo %d/%d\n", done, total);
+      (void)std::fprintf(stderr, "evade sim: monte carlo %d/%d\n", done, total);
     }
   };
   const distributed::MpiSession mpi;  // one process unless started by mpirun
@@ -252,28 +253,19 @@ std::string script_path(const char* name) {
   if (const char* env = std::getenv("EVADE_SCRIPT_DIR")) dirs.emplace_back(env);
   for (const std::string& d : config::scenario_search_dirs()) dirs.push_back(d + "/../scripts");
   for (const std::string& dir : dirs) {
-    const std::string p = dir + "/" + name;
+    std::string p = dir + "/" + name;  // not const: returned by move
     if (std::ifstream(p).good()) return p;
   }
   throw std::runtime_error(std::string("scripts/") + name + " not found");
 }
 
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') q += "'\\''";
-    else q += c;
-  }
-  return q + "'";
-}
-
-// --plot: scripts/plot_sim.py draws the CSV. Returns false (message on stderr) on failure.
+// --plot: scripts/plot_sim.py draws the CSV (its stdout to stderr). Returns false (message on
+// stderr) on failure.
 bool draw_plot(const SimOptions& o) {
-  const std::string cmd = "/usr/bin/python3 " + shell_quote(script_path("plot_sim.py")) + " " +
-                          shell_quote(o.csv) + " " + shell_quote(o.plot) + " 1>&2";
-  const int rc = std::system(cmd.c_str());
-  if (rc != 0) {
-    std::fprintf(stderr, "evade sim: plot failed (%s)\n", cmd.c_str());
+  const std::vector<std::string> argv = {"/usr/bin/python3", script_path("plot_sim.py"), o.csv,
+                                         o.plot};
+  if (cli::run_program(argv, true) != 0) {
+    (void)std::fprintf(stderr, "evade sim: plot failed (%s)\n", cli::command_line(argv).c_str());
     return false;
   }
   return true;
@@ -321,7 +313,7 @@ int run_sim(const SimOptions& o) {
     r = simulate(o, cfg, *make_endpoint(o, cfg));
   }
   if (!r.closest_approach_found) {
-    std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.encounter.max_duration_s);
+    (void)std::fprintf(stderr, "evade sim: no closest approach within %g s\n", cfg.encounter.max_duration_s);
     return 1;
   }
   nlohmann::json j = result_json(o, r, cfg, sc);
@@ -338,45 +330,47 @@ int run_sim(const SimOptions& o) {
   return 0;
 }
 
+evade::cli::Runner setup(CLI::App& app) {
+  auto o = std::make_shared<SimOptions>();
+  evade::cli::add_common_options(app, o->common, "seed0");
+  app.add_option("--accel", o->accel_mps2, "maximum acceleration [m/s^2] (guidance.max_accel_mps2)");
+  app.add_option("--detect", o->detect_s,
+                 "detection time before the nominal closest approach [s]");
+  app.add_option("--noise-rad", o->noise_rad,
+                 "angles-only sensor with this angle noise 1-sigma [rad] (keeps measured "
+                 "rates only if --rate-noise-radps is also given)");
+  app.add_option("--rate-hz", o->rate_hz, "sensor sample rate [Hz]");
+  app.add_option("--guidance-hz", o->guidance_hz, "guidance cycle rate [Hz] (guidance.rate_hz)");
+  app.add_option("--rate-noise-radps", o->rate_noise_radps,
+                 "sensor angle-rate noise 1-sigma [rad/s]");
+  app.add_flag("--no-rates", o->no_rates, "angles only (the filter estimates the rates)");
+  app.add_option("--runs", o->runs, "Monte Carlo runs (adds miss_m_p5/p50/p95)");
+  app.add_option("--seed", o->seed, "Monte Carlo seed");
+  app.add_option("--threads", o->threads, "Monte Carlo threads")->capture_default_str();
+  app.add_option("--csv", o->csv, "write the time history (truth, estimates, commands)");
+  app.add_option("--plot", o->plot, "draw the CSV with scripts/plot_sim.py into this PNG");
+  app.add_option("--lcm", o->lcm_url,
+                 "run the guidance in evade_guidance_node over LCM at this URL");
+  app.add_option("--lcm-lockstep", o->lockstep, "wait for the node's command every cycle")
+      ->capture_default_str();
+  app.add_option("--lcm-timeout-s", o->lcm_timeout_s, "LCM reply timeout [s]")
+      ->capture_default_str();
+  app.add_flag("--realtime", o->realtime,
+               "with --lcm: truth at wall-clock pace, the node at its own fixed rate "
+               "(no lockstep); adds command_age_ms_* and sim_late_steps");
+  app.add_option("--plan", o->plan.plan_file,
+                 "fly this burn-plan file (`evade plan ... --plan-out`) with the in-process "
+                 "law + plan executor on the scenario's objects");
+  app.add_option("--plan-epoch-s", o->plan.epoch_s,
+                 "with --plan: the plan's t = 0 this long after the run starts [s]")
+      ->capture_default_str();
+  app.add_option("--plan-after-s", o->plan.after_s,
+                 "with --plan: run this long after the last burn [s]")
+      ->capture_default_str();
+  return [o]() { return run_sim(*o); };
+}
+
 const bool kRegistered = evade::cli::register_command(
-    {"sim"}, "Closed-loop close-range evasion simulation (paper 000)", [](CLI::App& app) {
-      auto o = std::make_shared<SimOptions>();
-      evade::cli::add_common_options(app, o->common, "seed0");
-      app.add_option("--accel", o->accel_mps2, "maximum acceleration [m/s^2] (guidance.max_accel_mps2)");
-      app.add_option("--detect", o->detect_s,
-                     "detection time before the nominal closest approach [s]");
-      app.add_option("--noise-rad", o->noise_rad,
-                     "angles-only sensor with this angle noise 1-sigma [rad] (keeps measured "
-                     "rates only if --rate-noise-radps is also given)");
-      app.add_option("--rate-hz", o->rate_hz, "sensor sample rate [Hz]");
-      app.add_option("--guidance-hz", o->guidance_hz, "guidance cycle rate [Hz] (guidance.rate_hz)");
-      app.add_option("--rate-noise-radps", o->rate_noise_radps,
-                     "sensor angle-rate noise 1-sigma [rad/s]");
-      app.add_flag("--no-rates", o->no_rates, "angles only (the filter estimates the rates)");
-      app.add_option("--runs", o->runs, "Monte Carlo runs (adds miss_m_p5/p50/p95)");
-      app.add_option("--seed", o->seed, "Monte Carlo seed");
-      app.add_option("--threads", o->threads, "Monte Carlo threads")->capture_default_str();
-      app.add_option("--csv", o->csv, "write the time history (truth, estimates, commands)");
-      app.add_option("--plot", o->plot, "draw the CSV with scripts/plot_sim.py into this PNG");
-      app.add_option("--lcm", o->lcm_url,
-                     "run the guidance in evade_guidance_node over LCM at this URL");
-      app.add_option("--lcm-lockstep", o->lockstep, "wait for the node's command every cycle")
-          ->capture_default_str();
-      app.add_option("--lcm-timeout-s", o->lcm_timeout_s, "LCM reply timeout [s]")
-          ->capture_default_str();
-      app.add_flag("--realtime", o->realtime,
-                   "with --lcm: truth at wall-clock pace, the node at its own fixed rate "
-                   "(no lockstep); adds command_age_ms_* and sim_late_steps");
-      app.add_option("--plan", o->plan.plan_file,
-                     "fly this burn-plan file (`evade plan ... --plan-out`) with the in-process "
-                     "law + plan executor on the scenario's objects");
-      app.add_option("--plan-epoch-s", o->plan.epoch_s,
-                     "with --plan: the plan's t = 0 this long after the run starts [s]")
-          ->capture_default_str();
-      app.add_option("--plan-after-s", o->plan.after_s,
-                     "with --plan: run this long after the last burn [s]")
-          ->capture_default_str();
-      return [o]() { return run_sim(*o); };
-    });
+    {{"sim"}, "Closed-loop close-range evasion simulation (paper 000)", &setup});
 
 }  // namespace

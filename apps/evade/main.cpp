@@ -1,5 +1,6 @@
 // evade CLI entry point: builds the command tree from the registry and maps errors to
 // exit codes (0 ok, 1 runtime failure, 2 bad input).
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -14,22 +15,90 @@
 namespace evade::cli {
 namespace {
 
-struct Entry {
-  std::vector<std::string> path;
-  std::string description;
-  Setup setup;
+// Filled at static-init time (constant-initialized, so usable from any translation unit's
+// initializer).
+struct Registry {
+  static constexpr std::size_t kMaxCommands = 32;
+  std::array<Command, kMaxCommands> commands{};
+  std::size_t count = 0;
+  bool rejected = false;  ///< a registration lacked a field, or did not fit
 };
 
-std::vector<Entry>& registry() {
-  static std::vector<Entry> r;
+Registry& registry() noexcept {
+  static Registry r;
   return r;
+}
+
+// The command tree of every registered command: groups ("plan") get a subcommand of their
+// own. Returns each command's subcommand and runner.
+std::vector<std::pair<CLI::App*, Runner>> build_commands(CLI::App& app) {
+  const Registry& reg = registry();
+  std::map<std::string, CLI::App*> groups;
+  std::vector<std::pair<CLI::App*, Runner>> runners;
+  for (std::size_t k = 0; k < reg.count; ++k) {
+    const Command& c = reg.commands[k];
+    CLI::App* parent = &app;
+    const char* name = c.path[0];
+    if (c.path[1] != nullptr) {
+      auto it = groups.find(c.path[0]);
+      if (it == groups.end()) {
+        CLI::App* g = app.add_subcommand(c.path[0], std::string(c.path[0]) + " commands");
+        g->require_subcommand(1);
+        it = groups.emplace(c.path[0], g).first;
+      }
+      parent = it->second;
+      name = c.path[1];
+    }
+    CLI::App* sub = parent->add_subcommand(name, c.description);
+    runners.emplace_back(sub, c.setup(*sub));
+  }
+  return runners;
+}
+
+// Diagnostics go to stderr; a failed print there has no recovery (there is nowhere else to
+// report it), so the results of these std::fprintf(stderr, ...) are discarded explicitly.
+int run_cli(int argc, char** argv) {
+  if (registry().rejected) {
+    (void)std::fprintf(stderr, "evade: failed: a command registration was rejected (a field is "
+                       "null, or more than %zu commands: raise Registry::kMaxCommands in "
+                       "apps/evade/main.cpp)\n", Registry::kMaxCommands);
+    return 1;
+  }
+  CLI::App app{"evade: onboard evasion guidance and planning (papers 000-004)", "evade"};
+  app.set_version_flag("--version", std::string("evade ") + EVADE_VERSION);
+  app.require_subcommand(1);
+  const auto runners = build_commands(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  try {
+    for (const auto& [sub, run] : runners) {
+      if (sub->parsed()) return run();
+    }
+  } catch (const config::ConfigError& e) {
+    (void)std::fprintf(stderr, "evade: error: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    (void)std::fprintf(stderr, "evade: invalid input: %s\n", e.what());
+    return 2;
+  }
+  (void)std::fprintf(stderr, "evade: no command given (see --help)\n");
+  return 2;
 }
 
 }  // namespace
 
-bool register_command(const std::vector<std::string>& path, const std::string& description,
-                      Setup setup) {
-  registry().push_back({path, description, std::move(setup)});
+bool register_command(const Command& command) noexcept {
+  Registry& r = registry();
+  if (r.count == Registry::kMaxCommands || command.path[0] == nullptr ||
+      command.description == nullptr || command.setup == nullptr) {
+    r.rejected = true;
+    return false;
+  }
+  r.commands[r.count++] = command;
   return true;
 }
 
@@ -69,51 +138,15 @@ void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; 
 
 }  // namespace evade::cli
 
+// Nothing escapes main: a runtime failure anywhere (a command, or building the command
+// tree) is reported and exits 1.
 int main(int argc, char** argv) {
-  using namespace evade::cli;
-  CLI::App app{"evade: onboard evasion guidance and planning (papers 000-004)", "evade"};
-  app.set_version_flag("--version", std::string("evade ") + EVADE_VERSION);
-  app.require_subcommand(1);
-
-  std::map<std::string, CLI::App*> groups;
-  std::vector<std::pair<CLI::App*, Runner>> runners;
-  for (auto& e : registry()) {
-    CLI::App* parent = &app;
-    std::string prefix;
-    for (std::size_t i = 0; i + 1 < e.path.size(); ++i) {
-      prefix += e.path[i] + "/";
-      auto it = groups.find(prefix);
-      if (it == groups.end()) {
-        CLI::App* g = parent->add_subcommand(e.path[i], e.path[i] + " commands");
-        g->require_subcommand(1);
-        it = groups.emplace(prefix, g).first;
-      }
-      parent = it->second;
-    }
-    CLI::App* sub = parent->add_subcommand(e.path.back(), e.description);
-    runners.emplace_back(sub, e.setup(*sub));
-  }
-
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
-  }
-  try {
-    for (auto& [sub, run] : runners) {
-      if (sub->parsed()) return run();
-    }
-  } catch (const evade::config::ConfigError& e) {
-    std::fprintf(stderr, "evade: error: %s\n", e.what());
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "evade: invalid input: %s\n", e.what());
-    return 2;
+    return evade::cli::run_cli(argc, argv);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "evade: failed: %s\n", e.what());
-    return 1;
+    (void)std::fprintf(stderr, "evade: failed: %s\n", e.what());
+  } catch (...) {
+    (void)std::fprintf(stderr, "evade: failed: unknown exception\n");
   }
-  std::fprintf(stderr, "evade: no command given (see --help)\n");
-  return 2;
+  return 1;
 }

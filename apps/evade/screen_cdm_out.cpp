@@ -19,6 +19,7 @@
 #include "evade/conjunction/event_states.hpp"
 #include "evade/core/epoch.hpp"
 #include "evade/sgp4/teme_to_j2000.hpp"
+#include "number_list.hpp"
 
 namespace evade::cli {
 namespace {
@@ -29,9 +30,8 @@ using assessment::ScreeningEvent;
 // --cov-rtn-sigma-m R,T,N -> diag(R^2, T^2, N^2) position block, velocity block 0.
 std::optional<Mat6> assumed_cov(const std::string& text) {
   if (text.empty()) return std::nullopt;
-  double v[3];
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &tail) != 3 ||
+  const std::vector<double> v = parse_number_list(text, ',');
+  if (v.size() != 3 ||
       !(v[0] > 0.0 && v[1] > 0.0 && v[2] > 0.0) ||
       !(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])) ||
       v[0] > 1e7 || v[1] > 1e7 || v[2] > 1e7)
@@ -101,7 +101,7 @@ assessment::EventCdmOptions base_options(const CdmOutOptions& o, const CdmRunInf
 }
 
 nlohmann::json summary(const CdmOutOptions& o, nlohmann::json files) {
-  if (!files.empty()) std::fprintf(stderr, "evade screen: wrote %zu CDMs (%s) to %s\n", files.size(), o.format.c_str(), o.dir.c_str());
+  if (!files.empty()) (void)std::fprintf(stderr, "evade screen: wrote %zu CDMs (%s) to %s\n", files.size(), o.format.c_str(), o.dir.c_str());
   return {{"dir", o.dir}, {"format", o.format}, {"count", files.size()},
           {"covariance", o.cov_sigma.empty() ? "not known (no Pc)" : "assumed RTN sigmas " + o.cov_sigma + " m"},
           {"files", std::move(files)}};

@@ -64,8 +64,8 @@ int run_sim_plan(const SimPlanOptions& o, const sim::SimConfig& cfg, nlohmann::j
   (*j)["duration_s"] = run_cfg.duration_s;
   (*j)["guidance_rate_hz"] = run_cfg.rate_hz;
   if (r.burns.size() == static_cast<std::size_t>(f.plan.n_impulses)) return 0;
-  std::fprintf(stderr, "evade sim: %zu burns delivered for a plan of %d impulses\n",
-               r.burns.size(), f.plan.n_impulses);
+  (void)std::fprintf(stderr, "evade sim: %zu burns delivered for a plan of %d impulses\n",
+                     r.burns.size(), f.plan.n_impulses);
   return 1;
 }
 

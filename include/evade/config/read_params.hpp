@@ -55,8 +55,9 @@ std::string params_markdown(const std::string& prefix, const ParamTable<Cfg>& ta
     std::string def = param_value_text(d);
     if (p.spec.type == ParamType::kBool) def = d != 0.0 ? "true" : "false";
     if (!param_value_ok(p.spec, d)) def = "(required)";
-    md += "| `" + prefix + p.spec.key + "` | " + p.spec.unit + " | " + def + " | " +
-          param_allowed_text(p.spec) + " | " + p.spec.meaning + " |\n";
+    md.append("| `").append(prefix).append(p.spec.key).append("` | ").append(p.spec.unit);
+    md.append(" | ").append(def).append(" | ").append(param_allowed_text(p.spec));
+    md.append(" | ").append(p.spec.meaning).append(" |\n");
   }
   return md;
 }
