@@ -37,15 +37,15 @@ double angle_about(const Vec3& a, const Vec3& b, const Vec3& h) {
 
 }  // namespace
 
-double wrap_two_pi(double x) {
-  double y = std::fmod(x, kTwoPi);
+double wrap_two_pi(double angle_rad) {
+  double y = std::fmod(angle_rad, kTwoPi);
   if (y < 0.0) y += kTwoPi;
   if (y >= kTwoPi) y = 0.0;  // fmod rounding at exactly 2pi
   return y;
 }
 
-double wrap_pi(double x) {
-  double y = wrap_two_pi(x + kPi) - kPi;
+double wrap_pi(double angle_rad) {
+  double y = wrap_two_pi(angle_rad + kPi) - kPi;
   return y;
 }
 
@@ -76,15 +76,15 @@ double true_from_eccentric_anomaly(double ecc, double e) {
   return nu + kTwoPi * std::round((ecc - nu) / kTwoPi);
 }
 
-double eccentric_from_true_anomaly(double nu, double e) {
-  const double half = 0.5 * nu;
+double eccentric_from_true_anomaly(double true_anomaly_rad, double e) {
+  const double half = 0.5 * true_anomaly_rad;
   const double ecc = 2.0 * std::atan2(std::sqrt(1.0 - e) * std::sin(half),
                                       std::sqrt(1.0 + e) * std::cos(half));
-  return ecc + kTwoPi * std::round((nu - ecc) / kTwoPi);
+  return ecc + kTwoPi * std::round((true_anomaly_rad - ecc) / kTwoPi);
 }
 
-double mean_from_true_anomaly(double nu, double e) {
-  const double ecc = eccentric_from_true_anomaly(nu, e);
+double mean_from_true_anomaly(double true_anomaly_rad, double e) {
+  const double ecc = eccentric_from_true_anomaly(true_anomaly_rad, e);
   return ecc - e * std::sin(ecc);
 }
 

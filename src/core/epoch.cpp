@@ -26,8 +26,10 @@ long julian_day_number(int y, int m, int d) {
 void validate(const CalendarUtc& c) {
   auto bad = [](const char* what, double v, const char* allowed) {
     char buf[160];
-    std::snprintf(buf, sizeof buf, "calendar field %s = %g out of range (allowed %s)", what, v,
-                  allowed);
+    // The field names and ranges are the short literals below: the text fits (at worst
+    // snprintf truncates the message), so the count it returns is not needed.
+    (void)std::snprintf(buf, sizeof buf, "calendar field %s = %g out of range (allowed %s)", what,
+                        v, allowed);
     throw std::invalid_argument(buf);
   };
   if (c.year < 1900 || c.year > 2199) bad("year", c.year, "1900..2199");
@@ -93,6 +95,7 @@ CalendarUtc parse_calendar_utc(const std::string& text) {
   CalendarUtc c;
   char sep = 0;
   int consumed = 0;
+  // NOLINTNEXTLINE(cert-err34-c): %4d/%2d cannot overflow; validate() range-checks the %lf
   const int n = std::sscanf(text.c_str(), "%4d-%2d-%2d%c%2d:%2d:%lf%n", &c.year, &c.month, &c.day,
                             &sep, &c.hour, &c.minute, &c.second, &consumed);
   if (n != 7 || (sep != ' ' && sep != 'T') || static_cast<size_t>(consumed) != text.size()) {
@@ -105,8 +108,10 @@ CalendarUtc parse_calendar_utc(const std::string& text) {
 
 std::string format_calendar_utc(const CalendarUtc& c) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%04d-%02d-%02d %02d:%02d:%012.9f", c.year, c.month, c.day, c.hour,
-                c.minute, c.second);
+  // A valid calendar (validate()) is 29 characters; snprintf never overruns the buffer, so
+  // its returned count is not needed.
+  (void)std::snprintf(buf, sizeof buf, "%04d-%02d-%02d %02d:%02d:%012.9f", c.year, c.month, c.day,
+                      c.hour, c.minute, c.second);
   return buf;
 }
 

@@ -17,8 +17,11 @@ bool param_value_ok(const ParamSpec& p, double v) noexcept {
 
 std::string param_value_text(double v) {
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.15g", v);
-  if (std::isfinite(v) && std::strtod(buf, nullptr) != v) std::snprintf(buf, sizeof buf, "%.17g", v);
+  // %.17g of any double is at most 24 characters: the count snprintf returns is not needed.
+  (void)std::snprintf(buf, sizeof buf, "%.15g", v);
+  if (std::isfinite(v) && std::strtod(buf, nullptr) != v) {
+    (void)std::snprintf(buf, sizeof buf, "%.17g", v);
+  }
   return buf;
 }
 
