@@ -25,6 +25,7 @@ BurnPlan make_burn_plan(const FormationSpec& spec, const SatelliteId& threatened
     throw std::invalid_argument("formation plan: " + std::to_string(burns.size()) +
                                 " burns, expected 1.." + std::to_string(BurnPlan::kMaxImpulses));
   std::vector<double> t_s;
+  t_s.reserve(burns.size());
   for (const TangentialBurn& b : burns) t_s.push_back(b.t_s);
   std::vector<AppliedBurn> applied;
   const StateEci s0 = state_from_mean_elements(spec.sat(threatened), spec.earth);

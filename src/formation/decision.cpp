@@ -101,14 +101,14 @@ Encounter closest_approach(const StateEci& sat, const StateEci& deb) {
   return e;
 }
 
-double propagated_miss(const FormationSpec& spec, const SatelliteId& x, const ConjunctionSpec& conj,
-                       const ManeuverTiming& timing, const PropagationSettings& settings,
-                       double delta_a_m) {
+double propagated_miss(const FormationSpec& spec, const SatelliteId& threatened,
+                       const ConjunctionSpec& conj, const ManeuverTiming& timing,
+                       const PropagationSettings& settings, double delta_a_m) {
   const double t_b = conj.tca_s - timing.burn_before_tca_s;
-  const StateEci nominal = sat_at(spec, x, conj.tca_s, {}, settings);
+  const StateEci nominal = sat_at(spec, threatened, conj.tca_s, {}, settings);
   const StateEci deb = debris_state_at_tca(nominal, conj);
   if (delta_a_m == 0.0) return closest_approach(nominal, deb).miss_m;
-  const StateEci man = sat_at(spec, x, conj.tca_s, {{t_b, delta_a_m}}, settings);
+  const StateEci man = sat_at(spec, threatened, conj.tca_s, {{t_b, delta_a_m}}, settings);
   return closest_approach(man, deb).miss_m;
 }
 
@@ -233,9 +233,9 @@ void choose_direction(Decision& dec, double required_miss_m) {
 
 }  // namespace
 
-Decision decide(const FormationSpec& spec, const SatelliteId& x, const LimitsResult& limits,
-                const ConjunctionSpec& conj, const ManeuverTiming& timing,
-                const PropagationSettings& settings) {
+Decision decide(const FormationSpec& spec, const SatelliteId& threatened,
+                const LimitsResult& limits, const ConjunctionSpec& conj,
+                const ManeuverTiming& timing, const PropagationSettings& settings) {
   spec.validate();
   conj.validate();
   timing.validate(conj.tca_s);
@@ -245,7 +245,7 @@ Decision decide(const FormationSpec& spec, const SatelliteId& x, const LimitsRes
   dec.restore_time_s = conj.tca_s + timing.restore_after_tca_s;
   dec.restore = timing.restore;
 
-  const StateEci nominal = sat_at(spec, x, conj.tca_s, {}, settings);
+  const StateEci nominal = sat_at(spec, threatened, conj.tca_s, {}, settings);
   const StateEci deb = debris_state_at_tca(nominal, conj);
   const Encounter enc0 = closest_approach(nominal, deb);
   dec.nominal_miss_m = enc0.miss_m;
@@ -262,14 +262,14 @@ Decision decide(const FormationSpec& spec, const SatelliteId& x, const LimitsRes
     return dec;
   }
 
-  const DecisionInputs in{spec, x, limits, conj, timing, settings};
+  const DecisionInputs in{spec, threatened, limits, conj, timing, settings};
   const MissModel mm = miss_model(in, nominal, deb, dec.burn_time_s);
   solve_direction(dec.raise, 1.0, mm, in, enc0.miss_m);
   solve_direction(dec.lower, -1.0, mm, in, enc0.miss_m);
   choose_direction(dec, conj.required_miss_m);
   // Δv of each burn from the propagation (vis-viva at the burn point).
   if (dec.delta_a_m != 0.0) {
-    const StateEci s0 = state_from_mean_elements(spec.sat(x), spec.earth);
+    const StateEci s0 = state_from_mean_elements(spec.sat(threatened), spec.earth);
     const double t_last = dec.restore ? dec.restore_time_s : dec.burn_time_s;
     propagate_with_burns(s0, {t_last}, dec.burn_plan(), spec.earth, settings.integrator,
                          &dec.burns);

@@ -79,10 +79,11 @@ void FormationSpec::validate() const {
   }
 }
 
-std::vector<ConstraintDef> constraints_for(const FormationSpec& spec, const SatelliteId& x) {
+std::vector<ConstraintDef> constraints_for(const FormationSpec& spec,
+                                           const SatelliteId& threatened) {
   spec.validate();
-  if (x.group >= spec.groups.size()) {
-    fail("threatened.group", static_cast<double>(x.group),
+  if (threatened.group >= spec.groups.size()) {
+    fail("threatened.group", static_cast<double>(threatened.group),
          "[0, " + std::to_string(spec.groups.size() - 1) + "]");
   }
   std::vector<ConstraintDef> out;
@@ -106,8 +107,8 @@ std::vector<ConstraintDef> constraints_for(const FormationSpec& spec, const Sate
     c.upper = spec.phase_tolerance_rad;
     out.push_back(c);
   };
-  if (x.group != ref) {
-    inter(x.group);
+  if (threatened.group != ref) {
+    inter(threatened.group);
   } else {
     for (std::size_t g = 0; g < spec.groups.size(); ++g) {
       if (g != ref) inter(g);
@@ -115,11 +116,11 @@ std::vector<ConstraintDef> constraints_for(const FormationSpec& spec, const Sate
   }
   const double d = spec.box_delta_m;
   const double l = spec.side_length_m;
-  const std::string gname = "(" + spec.groups[x.group].name + ")";
+  const std::string gname = "(" + spec.groups[threatened.group].name + ")";
   for (Role dep : {Role::kDeputy1, Role::kDeputy2}) {
     ConstraintDef c;
-    c.first = {x.group, dep};
-    c.second = {x.group, Role::kChief};
+    c.first = {threatened.group, dep};
+    c.second = {threatened.group, Role::kChief};
     c.kind = ConstraintKind::kOutOfPlane;
     c.name = std::string("out_of_plane_") + role_name(dep) + gname;
     c.nominal = l * std::sqrt(3.0) / 2.0;
@@ -129,8 +130,8 @@ std::vector<ConstraintDef> constraints_for(const FormationSpec& spec, const Sate
   }
   for (Role dep : {Role::kDeputy1, Role::kDeputy2}) {
     ConstraintDef c;
-    c.first = {x.group, dep};
-    c.second = {x.group, Role::kChief};
+    c.first = {threatened.group, dep};
+    c.second = {threatened.group, Role::kChief};
     c.kind = ConstraintKind::kInPlane;
     c.name = std::string("in_plane_") + role_name(dep) + gname;
     c.nominal = l / 2.0;

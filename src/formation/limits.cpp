@@ -29,11 +29,11 @@ double largest_step(double q0, double rho, double kappa, double d, double lo, do
 
 }  // namespace
 
-LimitsResult compute_limits(const FormationSpec& spec, const SatelliteId& x) {
-  const std::vector<ConstraintDef> defs = constraints_for(spec, x);  // validates spec
-  const MeanElements& mx = spec.sat(x);
+LimitsResult compute_limits(const FormationSpec& spec, const SatelliteId& threatened) {
+  const std::vector<ConstraintDef> defs = constraints_for(spec, threatened);  // validates spec
+  const MeanElements& mx = spec.sat(threatened);
   LimitsResult res;
-  res.threatened = x;
+  res.threatened = threatened;
   res.k = drift_coefficients(mx.a_m, mx.e, mx.i_rad, spec.earth);
   const double t = spec.horizon_days;
   for (const ConstraintDef& c : defs) {
@@ -43,7 +43,7 @@ LimitsResult compute_limits(const FormationSpec& spec, const SatelliteId& x) {
     const MeanElements& s = spec.sat(c.second);
     row.deviation = deviation(c, f, s);
     // ∂q/∂(angle of X): +1 when X is `first`, -1 when X is `second`, 0 otherwise.
-    const double role = (x == c.first ? 1.0 : 0.0) - (x == c.second ? 1.0 : 0.0);
+    const double role = (threatened == c.first ? 1.0 : 0.0) - (threatened == c.second ? 1.0 : 0.0);
     row.involves_threatened = role != 0.0;
     switch (c.kind) {
       case ConstraintKind::kInterGroupRaan:  // paper eq. 3: Δa ≤ ΔΩ / (K_Ω T)

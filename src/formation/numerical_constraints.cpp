@@ -29,9 +29,9 @@ void PropagationSettings::validate() const {
   }
 }
 
-FormationPropagator::FormationPropagator(const FormationSpec& spec, const SatelliteId& x,
+FormationPropagator::FormationPropagator(const FormationSpec& spec, const SatelliteId& threatened,
                                          double t_eval_s, const PropagationSettings& settings)
-    : spec_(spec), x_(x), settings_(settings) {
+    : spec_(spec), x_(threatened), settings_(settings) {
   settings_.validate();
   defs_ = constraints_for(spec_, x_);  // validates spec
   if (!std::isfinite(t_eval_s) || !(t_eval_s > 0.0) || t_eval_s > 120.0 * kSecondsPerDay) {

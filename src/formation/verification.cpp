@@ -7,14 +7,15 @@
 
 namespace evade::formation {
 
-Verification verify(const FormationSpec& spec, const SatelliteId& x, const ConjunctionSpec& conj,
-                    const Decision& dec, const PropagationSettings& settings) {
+Verification verify(const FormationSpec& spec, const SatelliteId& threatened,
+                    const ConjunctionSpec& conj, const Decision& decision,
+                    const PropagationSettings& settings) {
   conj.validate();
   Verification v;
-  v.window_end_s = dec.burn_time_s + spec.horizon_days * kSecondsPerDay;
-  const double t_eval = std::max(v.window_end_s, dec.restore_time_s);
-  FormationPropagator fp(spec, x, t_eval, settings);
-  const std::vector<TangentialBurn> plan = dec.burn_plan();
+  v.window_end_s = decision.burn_time_s + spec.horizon_days * kSecondsPerDay;
+  const double t_eval = std::max(v.window_end_s, decision.restore_time_s);
+  FormationPropagator fp(spec, threatened, t_eval, settings);
+  const std::vector<TangentialBurn> plan = decision.burn_plan();
   const std::vector<DeviationSeries> ser = fp.series(plan, &v.burns);
   v.all_kept = true;
   for (std::size_t r = 0; r < ser.size(); ++r) {
@@ -38,7 +39,7 @@ Verification verify(const FormationSpec& spec, const SatelliteId& x, const Conju
     v.all_kept = v.all_kept && cc.kept;
     v.rows.push_back(cc);
   }
-  const StateEci s0 = state_from_mean_elements(spec.sat(x), spec.earth);
+  const StateEci s0 = state_from_mean_elements(spec.sat(threatened), spec.earth);
   const StateEci nominal =
       propagate_with_burns(s0, {conj.tca_s}, {}, spec.earth, settings.integrator).front();
   const StateEci man =
@@ -50,7 +51,8 @@ Verification verify(const FormationSpec& spec, const SatelliteId& x, const Conju
   return v;
 }
 
-std::vector<NumericalLimitRow> numerical_limits(const FormationSpec& spec, const SatelliteId& x,
+std::vector<NumericalLimitRow> numerical_limits(const FormationSpec& spec,
+                                                const SatelliteId& threatened,
                                                 const LimitsResult& analytic, double burn_time_s,
                                                 const PropagationSettings& settings,
                                                 double rel_tol) {
@@ -59,7 +61,7 @@ std::vector<NumericalLimitRow> numerical_limits(const FormationSpec& spec, const
                                 " outside [0, inf)");
   }
   const double t_eval = burn_time_s + spec.horizon_days * kSecondsPerDay;
-  FormationPropagator fp(spec, x, t_eval, settings);
+  FormationPropagator fp(spec, threatened, t_eval, settings);
   std::vector<NumericalLimitRow> out;
   for (std::size_t r = 0; r < analytic.rows.size(); ++r) {
     const ConstraintLimit& row = analytic.rows[r];
