@@ -53,6 +53,10 @@ const std::string& scalar_text(const YAML::Node& n, const std::string& where) {
   return n.Scalar();
 }
 
+ConfigError duplicate_key_error(const std::string& where, const std::string& key) {
+  return ConfigError(where + ": duplicate key '" + key + "'");
+}
+
 // YAML -> JSON, keeping every scalar as text so the typed getters do the only parsing.
 json to_json(const YAML::Node& n, const std::string& where) {
   switch (n.Type()) {
@@ -70,7 +74,7 @@ json to_json(const YAML::Node& n, const std::string& where) {
       for (const auto& kv : n) {
         const std::string k = kv.first.IsScalar() ? scalar_text(kv.first, where)
                                                   : kv.first.as<std::string>();
-        if (o.contains(k)) throw ConfigError(where + ": duplicate key '" + k + "'");
+        if (o.contains(k)) throw duplicate_key_error(where, k);
         o[k] = to_json(kv.second, where);
       }
       return o;
@@ -145,7 +149,8 @@ std::string first_bad_byte(const std::string& text) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (n == 0 || is_control_byte(c)) {
       char byte[8];
-      std::snprintf(byte, sizeof byte, "0x%02X", c);
+      // "0xHH" always fits: the count snprintf returns is not needed.
+      (void)std::snprintf(byte, sizeof byte, "0x%02X", c);
       return "line " + std::to_string(line) + ", column " + std::to_string(col) +
              (n == 0 ? ": not UTF-8 text (byte " : ": a control character (byte ") + byte + ")";
     }
@@ -171,8 +176,9 @@ void require_utf8(const std::string& text, const std::string& where) {
 // Shortest of %.15g / %.17g that reads back as the same double.
 std::string fmt(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.15g", v);
-  if (std::strtod(buf, nullptr) != v) std::snprintf(buf, sizeof buf, "%.17g", v);
+  // %.17g of any double is at most 24 characters: the count snprintf returns is not needed.
+  (void)std::snprintf(buf, sizeof buf, "%.15g", v);
+  if (std::strtod(buf, nullptr) != v) (void)std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
 }
 
@@ -216,9 +222,10 @@ Scenario Scenario::load(const std::string& name_or_path) {
     if (!file_exists(path)) throw ConfigError("scenario file '" + path + "' not found");
   } else {
     const auto dirs = scenario_search_dirs();
+    const std::string file_name = "/" + name_or_path + ".yaml";
     for (const auto& d : dirs) {
-      if (file_exists(d + "/" + name_or_path + ".yaml")) {
-        path = d + "/" + name_or_path + ".yaml";
+      if (file_exists(d + file_name)) {
+        path = d + file_name;
         break;
       }
     }
@@ -249,18 +256,20 @@ void Scenario::apply_override(const std::string& assignment) {
   if (value.is_null()) value = json(text);
   json* cur = &tree_;
   const auto parts = split_key(key);
+  const auto component_error = [&key](const std::string& p, const std::string& what) {
+    return ConfigError("--set " + key + ": '" + p + "' " + what);
+  };
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const std::string& p = parts[i];
     if (p.empty()) throw ConfigError("--set '" + assignment + "': empty key component");
     const bool last = i + 1 == parts.size();
     if (cur->is_array()) {
       if (!is_index(p) || std::stoul(p) >= cur->size())
-        throw ConfigError("--set " + key + ": '" + p + "' is not an index of a list of " +
-                          std::to_string(cur->size()));
+        throw component_error(p, "is not an index of a list of " + std::to_string(cur->size()));
       cur = &(*cur)[std::stoul(p)];
     } else {
       if (!cur->is_object()) {
-        if (!cur->is_null()) throw ConfigError("--set " + key + ": '" + p + "' is below a value, not a mapping");
+        if (!cur->is_null()) throw component_error(p, "is below a value, not a mapping");
         *cur = json::object();
       }
       cur = &(*cur)[p];
@@ -389,7 +398,7 @@ bool Scenario::get_bool(const std::string& key, bool fallback) const {
 std::string Scenario::get_string(const std::string& key) const {
   const json* n = find(key);
   if (!n) fail(key, "<missing>", "a string (required key)");
-  const std::string text = scalar_text(key, *n);
+  std::string text = scalar_text(key, *n);
   record(key, text);
   return text;
 }
@@ -405,7 +414,7 @@ std::string Scenario::get_string(const std::string& key, const std::string& fall
 std::string Scenario::get_enum(const std::string& key, const std::vector<std::string>& allowed) const {
   const json* n = find(key);
   if (!n) fail(key, "<missing>", "one of {" + join(allowed, ", ") + "} (required key)");
-  const std::string text = scalar_text(key, *n);
+  std::string text = scalar_text(key, *n);
   if (std::find(allowed.begin(), allowed.end(), text) == allowed.end())
     fail(key, text, "one of {" + join(allowed, ", ") + "}");
   record(key, text);
