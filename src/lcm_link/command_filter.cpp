@@ -18,8 +18,9 @@ CommandVerdict receive_command(const lcm_recv_buf_t* rbuf, bool* have_last,
   }
   const guidance_lcm::Reason r = guidance_lcm::validate(m);
   if (r != guidance_lcm::Reason::kOk) {
-    std::fprintf(stderr, "evade sim: rejected a malformed command from the node (%s)\n",
-                 guidance_lcm::reason_name(r));
+    // A diagnostic only: the command is rejected whether or not stderr takes the line.
+    (void)std::fprintf(stderr, "evade sim: rejected a malformed command from the node (%s)\n",
+                       guidance_lcm::reason_name(r));
     return CommandVerdict::kMalformed;
   }
   if (*have_last && m.seq <= *last_seq) return CommandVerdict::kOld;

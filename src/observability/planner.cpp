@@ -127,7 +127,8 @@ PlanResult plan_isres(const SampledProblem& s, ObjectiveKind k, const Estimation
 
   PlanResult r;
   r.objective = k;
-  r.history.reserve(static_cast<std::size_t>(o.max_evaluations + o.polish_max_evaluations));
+  r.history.reserve(static_cast<std::size_t>(o.max_evaluations) +
+                    static_cast<std::size_t>(o.polish_max_evaluations));
   Context ctx{&s, &ec, k, &o, &r};
   const std::vector<double> lb{-p.eps_max_rad, p.theta_min_rad};
   const std::vector<double> ub{p.eps_max_rad, p.theta_max_rad};

@@ -55,7 +55,8 @@ MonteCarloRuns run_monte_carlo_range(const SimConfig& base, int run_begin, int r
       const int k = next.fetch_add(1);
       if (k >= runs) return;
       try {
-        const auto i = static_cast<std::uint64_t>(run_begin + k);  // the run index
+        const std::uint64_t i =  // the run index
+            static_cast<std::uint64_t>(run_begin) + static_cast<std::uint64_t>(k);
         SimConfig c = base;
         c.sensor.seed = splitmix64(seed, 2 * i);
         c.actuator.seed = splitmix64(seed, 2 * i + 1);

@@ -159,7 +159,7 @@ std::string plan_file_json(const PlanFile& f) {
                              {"dv_rsw_mps", vec_json(b.dv_rsw_mps)},
                              {"dv_eci_mps", b.dv_eci_valid ? vec_json(b.dv_eci_mps) : json()}});
   }
-  const std::string text = j.dump(2) + "\n";
+  std::string text = j.dump(2) + "\n";
   (void)parse_plan_file(text, "(being written)");  // the reader's rules, field named
   return text;
 }

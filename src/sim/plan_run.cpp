@@ -52,7 +52,8 @@ class PlanLoop {
         actuator_(cfg.actuator) {}
 
   PlanRunResult run(const PlanRunHook& hook) {
-    const long n = static_cast<long>(std::llround(cfg_.duration_s * 1e6 / cycle_us_));
+    const long n =
+        static_cast<long>(std::llround(cfg_.duration_s * 1e6 / static_cast<double>(cycle_us_)));
     for (long k = 0; k < n; ++k) {
       const std::int64_t utime = kPlanRunUtime0 + k * cycle_us_;
       if (hook) hook(k, utime);

@@ -29,7 +29,8 @@ constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
 double quantile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+  // Nearest rank (q in [0, 1]); lround, not +0.5 truncation, which rounds 0.49999999999999994 up.
+  const auto k = static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
   return v[std::min(k, v.size() - 1)];
 }
 

@@ -199,7 +199,7 @@ guidance::ThrustCommand ClosedLoop::exchange(std::int64_t utime,
   nav.r_eci_m = truth_.x().segment<3>(0);
   nav.v_eci_mps = truth_.x().segment<3>(3);
   nav.valid = true;
-  const guidance::ThrustCommand cmd = guidance_.exchange(utime, nav, meas);
+  guidance::ThrustCommand cmd = guidance_.exchange(utime, nav, meas);
   ++res_.cycles;
   accel_queue_.push_back({utime + sched_.act_lat_us, {}, actuator_.accel_eci_mps2(cmd)});
   apply_due_accel(utime);
