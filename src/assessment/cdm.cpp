@@ -17,28 +17,46 @@ namespace {
 
 enum class Kind { kText, kNumber, kEpoch };
 
-const std::vector<std::string> kHeader = {"CCSDS_CDM_VERS", "CREATION_DATE", "ORIGINATOR",
-                                          "MESSAGE_FOR", "MESSAGE_ID"};
-const std::vector<std::string> kRelative = {
-    "TCA", "MISS_DISTANCE", "RELATIVE_SPEED", "RELATIVE_POSITION_R", "RELATIVE_POSITION_T",
-    "RELATIVE_POSITION_N", "RELATIVE_VELOCITY_R", "RELATIVE_VELOCITY_T", "RELATIVE_VELOCITY_N",
-    "START_SCREEN_PERIOD", "STOP_SCREEN_PERIOD", "SCREEN_VOLUME_FRAME", "SCREEN_VOLUME_SHAPE",
-    "SCREEN_VOLUME_X", "SCREEN_VOLUME_Y", "SCREEN_VOLUME_Z", "SCREEN_ENTRY_TIME",
-    "SCREEN_EXIT_TIME", "COLLISION_PROBABILITY", "COLLISION_PROBABILITY_METHOD"};
-const std::vector<std::string> kMetadata = {
-    "OBJECT", "OBJECT_DESIGNATOR", "CATALOG_NAME", "OBJECT_NAME", "INTERNATIONAL_DESIGNATOR",
-    "OBJECT_TYPE", "OPERATOR_CONTACT_POSITION", "OPERATOR_ORGANIZATION", "OPERATOR_PHONE",
-    "OPERATOR_EMAIL", "EPHEMERIS_NAME", "COVARIANCE_METHOD", "MANEUVERABLE", "ORBIT_CENTER",
-    "REF_FRAME", "GRAVITY_MODEL", "ATMOSPHERIC_MODEL", "N_BODY_PERTURBATIONS",
-    "SOLAR_RAD_PRESSURE", "EARTH_TIDES", "INTRACK_THRUST"};
-const std::vector<std::string> kOd = {
-    "TIME_LASTOB_START", "TIME_LASTOB_END", "RECOMMENDED_OD_SPAN", "ACTUAL_OD_SPAN",
-    "OBS_AVAILABLE", "OBS_USED", "TRACKS_AVAILABLE", "TRACKS_USED", "RESIDUALS_ACCEPTED",
-    "WEIGHTED_RMS"};
-const std::vector<std::string> kAdditional = {"AREA_PC", "AREA_DRG", "AREA_SRP", "MASS",
-                                              "CD_AREA_OVER_MASS", "CR_AREA_OVER_MASS",
-                                              "THRUST_ACCELERATION", "SEDR"};
-const std::vector<std::string> kState = {"X", "Y", "Z", "X_DOT", "Y_DOT", "Z_DOT"};
+const std::vector<std::string>& header_keywords() {
+  static const std::vector<std::string> k = {"CCSDS_CDM_VERS", "CREATION_DATE", "ORIGINATOR",
+                                             "MESSAGE_FOR", "MESSAGE_ID"};
+  return k;
+}
+const std::vector<std::string>& relative_keywords() {
+  static const std::vector<std::string> k = {
+      "TCA", "MISS_DISTANCE", "RELATIVE_SPEED", "RELATIVE_POSITION_R", "RELATIVE_POSITION_T",
+      "RELATIVE_POSITION_N", "RELATIVE_VELOCITY_R", "RELATIVE_VELOCITY_T", "RELATIVE_VELOCITY_N",
+      "START_SCREEN_PERIOD", "STOP_SCREEN_PERIOD", "SCREEN_VOLUME_FRAME", "SCREEN_VOLUME_SHAPE",
+      "SCREEN_VOLUME_X", "SCREEN_VOLUME_Y", "SCREEN_VOLUME_Z", "SCREEN_ENTRY_TIME",
+      "SCREEN_EXIT_TIME", "COLLISION_PROBABILITY", "COLLISION_PROBABILITY_METHOD"};
+  return k;
+}
+const std::vector<std::string>& metadata_keywords() {
+  static const std::vector<std::string> k = {
+      "OBJECT", "OBJECT_DESIGNATOR", "CATALOG_NAME", "OBJECT_NAME", "INTERNATIONAL_DESIGNATOR",
+      "OBJECT_TYPE", "OPERATOR_CONTACT_POSITION", "OPERATOR_ORGANIZATION", "OPERATOR_PHONE",
+      "OPERATOR_EMAIL", "EPHEMERIS_NAME", "COVARIANCE_METHOD", "MANEUVERABLE", "ORBIT_CENTER",
+      "REF_FRAME", "GRAVITY_MODEL", "ATMOSPHERIC_MODEL", "N_BODY_PERTURBATIONS",
+      "SOLAR_RAD_PRESSURE", "EARTH_TIDES", "INTRACK_THRUST"};
+  return k;
+}
+const std::vector<std::string>& od_keywords() {
+  static const std::vector<std::string> k = {
+      "TIME_LASTOB_START", "TIME_LASTOB_END", "RECOMMENDED_OD_SPAN", "ACTUAL_OD_SPAN",
+      "OBS_AVAILABLE", "OBS_USED", "TRACKS_AVAILABLE", "TRACKS_USED", "RESIDUALS_ACCEPTED",
+      "WEIGHTED_RMS"};
+  return k;
+}
+const std::vector<std::string>& additional_keywords() {
+  static const std::vector<std::string> k = {"AREA_PC", "AREA_DRG", "AREA_SRP", "MASS",
+                                             "CD_AREA_OVER_MASS", "CR_AREA_OVER_MASS",
+                                             "THRUST_ACCELERATION", "SEDR"};
+  return k;
+}
+const std::vector<std::string>& state_keywords() {
+  static const std::vector<std::string> k = {"X", "Y", "Z", "X_DOT", "Y_DOT", "Z_DOT"};
+  return k;
+}
 const char* const kCovAxes[9] = {"R", "T", "N", "RDOT", "TDOT", "NDOT", "DRG", "SRP", "THR"};
 
 std::vector<std::string> covariance_keywords() {
@@ -49,29 +67,41 @@ std::vector<std::string> covariance_keywords() {
   }
   return k;
 }
-const std::vector<std::string> kCovariance = covariance_keywords();
+const std::vector<std::string>& covariance_keyword_table() {
+  static const std::vector<std::string> k = covariance_keywords();
+  return k;
+}
 
-const std::set<std::string> kMandatory = {
-    "CCSDS_CDM_VERS", "CREATION_DATE", "ORIGINATOR", "MESSAGE_ID", "TCA", "MISS_DISTANCE",
-    "OBJECT", "OBJECT_DESIGNATOR", "CATALOG_NAME", "OBJECT_NAME", "INTERNATIONAL_DESIGNATOR",
-    "EPHEMERIS_NAME", "COVARIANCE_METHOD", "MANEUVERABLE", "REF_FRAME", "X", "Y", "Z", "X_DOT",
-    "Y_DOT", "Z_DOT"};
+const std::set<std::string>& mandatory_keywords() {
+  static const std::set<std::string> k = {
+      "CCSDS_CDM_VERS", "CREATION_DATE", "ORIGINATOR", "MESSAGE_ID", "TCA", "MISS_DISTANCE",
+      "OBJECT", "OBJECT_DESIGNATOR", "CATALOG_NAME", "OBJECT_NAME", "INTERNATIONAL_DESIGNATOR",
+      "EPHEMERIS_NAME", "COVARIANCE_METHOD", "MANEUVERABLE", "REF_FRAME", "X", "Y", "Z", "X_DOT",
+      "Y_DOT", "Z_DOT"};
+  return k;
+}
 
-const std::set<std::string> kEpochs = {"CREATION_DATE", "TCA", "START_SCREEN_PERIOD",
-                                       "STOP_SCREEN_PERIOD", "SCREEN_ENTRY_TIME",
-                                       "SCREEN_EXIT_TIME", "TIME_LASTOB_START", "TIME_LASTOB_END"};
+const std::set<std::string>& epoch_keywords() {
+  static const std::set<std::string> k = {
+      "CREATION_DATE",     "TCA",              "START_SCREEN_PERIOD", "STOP_SCREEN_PERIOD",
+      "SCREEN_ENTRY_TIME", "SCREEN_EXIT_TIME", "TIME_LASTOB_START",   "TIME_LASTOB_END"};
+  return k;
+}
 
-const std::map<std::string, std::vector<std::string>> kEnums = {
-    {"OBJECT", {"OBJECT1", "OBJECT2"}},
-    {"MANEUVERABLE", {"YES", "NO", "N/A"}},
-    {"COVARIANCE_METHOD", {"CALCULATED", "DEFAULT"}},
-    {"REF_FRAME", {"EME2000", "GCRF", "ITRF"}},
-    {"SCREEN_VOLUME_FRAME", {"RTN", "TVN"}},
-    {"SCREEN_VOLUME_SHAPE", {"ELLIPSOID", "BOX"}},
-    {"OBJECT_TYPE", {"PAYLOAD", "ROCKET BODY", "DEBRIS", "UNKNOWN", "OTHER"}},
-    {"SOLAR_RAD_PRESSURE", {"YES", "NO"}},
-    {"EARTH_TIDES", {"YES", "NO"}},
-    {"INTRACK_THRUST", {"YES", "NO"}}};
+const std::map<std::string, std::vector<std::string>>& enum_values() {
+  static const std::map<std::string, std::vector<std::string>> k = {
+      {"OBJECT", {"OBJECT1", "OBJECT2"}},
+      {"MANEUVERABLE", {"YES", "NO", "N/A"}},
+      {"COVARIANCE_METHOD", {"CALCULATED", "DEFAULT"}},
+      {"REF_FRAME", {"EME2000", "GCRF", "ITRF"}},
+      {"SCREEN_VOLUME_FRAME", {"RTN", "TVN"}},
+      {"SCREEN_VOLUME_SHAPE", {"ELLIPSOID", "BOX"}},
+      {"OBJECT_TYPE", {"PAYLOAD", "ROCKET BODY", "DEBRIS", "UNKNOWN", "OTHER"}},
+      {"SOLAR_RAD_PRESSURE", {"YES", "NO"}},
+      {"EARTH_TIDES", {"YES", "NO"}},
+      {"INTRACK_THRUST", {"YES", "NO"}}};
+  return k;
+}
 
 std::string covariance_unit(const std::string& key) {
   const auto us = key.find('_');
@@ -91,7 +121,7 @@ std::string covariance_unit(const std::string& key) {
 }
 
 Kind keyword_kind(const std::string& key, CdmSectionId id) {
-  if (kEpochs.count(key)) return Kind::kEpoch;
+  if (epoch_keywords().count(key)) return Kind::kEpoch;
   if (id == CdmSectionId::kCovariance || id == CdmSectionId::kState ||
       id == CdmSectionId::kAdditional)
     return Kind::kNumber;
@@ -134,8 +164,8 @@ void check_item(const CdmItem& it, CdmSectionId id) {
   if (!it.unit.empty() && upper(it.unit) != upper(unit))
     fail(it, "expected unit [" + (unit.empty() ? std::string("none") : unit) + "], found [" +
                  it.unit + "]");
-  const auto e = kEnums.find(it.key);
-  if (e != kEnums.end() &&
+  const auto e = enum_values().find(it.key);
+  if (e != enum_values().end() &&
       std::find(e->second.begin(), e->second.end(), upper(it.value)) == e->second.end()) {
     std::string allowed;
     for (const auto& a : e->second) allowed += (allowed.empty() ? "" : ", ") + a;
@@ -156,13 +186,16 @@ void check_section(const CdmSection& s, CdmSectionId id, int last_line,
   std::vector<std::string> required;
   const auto& kw = cdm_section_keywords(id);
   for (std::size_t n = 0; n < kw.size(); ++n) {
-    if (kMandatory.count(kw[n]) || (id == CdmSectionId::kCovariance && n < 21))
+    if (mandatory_keywords().count(kw[n]) || (id == CdmSectionId::kCovariance && n < 21))
       required.push_back(kw[n]);
   }
+  const auto missing = [&](const std::string& k) {
+    return CdmError("CDM line " + std::to_string(last_line) + ": keyword '" + k +
+                    "': mandatory in " + where + " but missing");
+  };
   for (const auto& k : required) {
     if (!seen.count(k)) {
-      throw CdmError("CDM line " + std::to_string(last_line) + ": keyword '" + k +
-                     "': mandatory in " + where + " but missing");
+      throw missing(k);
     }
   }
 }
@@ -212,15 +245,15 @@ bool Cdm::operator==(const Cdm& o) const {
 
 const std::vector<std::string>& cdm_section_keywords(CdmSectionId id) {
   switch (id) {
-    case CdmSectionId::kHeader: return kHeader;
-    case CdmSectionId::kRelative: return kRelative;
-    case CdmSectionId::kMetadata: return kMetadata;
-    case CdmSectionId::kOd: return kOd;
-    case CdmSectionId::kAdditional: return kAdditional;
-    case CdmSectionId::kState: return kState;
-    case CdmSectionId::kCovariance: return kCovariance;
+    case CdmSectionId::kHeader: return header_keywords();
+    case CdmSectionId::kRelative: return relative_keywords();
+    case CdmSectionId::kMetadata: return metadata_keywords();
+    case CdmSectionId::kOd: return od_keywords();
+    case CdmSectionId::kAdditional: return additional_keywords();
+    case CdmSectionId::kState: return state_keywords();
+    case CdmSectionId::kCovariance: return covariance_keyword_table();
   }
-  return kHeader;
+  return header_keywords();
 }
 
 bool cdm_keyword_section(const std::string& key, CdmSectionId* id) {
@@ -287,11 +320,11 @@ StateEci cdm_state(const Cdm& c, int i) {
 
 Mat6 cdm_cov_rtn(const Cdm& c, int i) {
   Mat6 m;
+  const std::vector<std::string>& keys = covariance_keyword_table();
   for (int r = 0; r < 6; ++r) {
     for (int k = 0; k <= r; ++k) {
       m(r, k) = m(k, r) =
-          std::strtod(cdm_value(c.object[i].covariance, kCovariance[r * (r + 1) / 2 + k]).c_str(),
-                      nullptr);
+          std::strtod(cdm_value(c.object[i].covariance, keys[r * (r + 1) / 2 + k]).c_str(), nullptr);
     }
   }
   return m;

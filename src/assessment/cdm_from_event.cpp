@@ -19,7 +19,11 @@ namespace {
 
 std::string fmt(const char* f, double v) {
   char b[64];
-  std::snprintf(b, sizeof b, f, v);
+  const int n = std::snprintf(b, sizeof b, f, v);
+  if (n < 0 || n >= static_cast<int>(sizeof b)) {  // never for an orbit: %.9f needs v > 1e50
+    throw std::invalid_argument(std::string("CDM value ") + std::to_string(v) +
+                                " does not fit the field format " + f);
+  }
   return b;
 }
 
@@ -73,8 +77,8 @@ void covariance(CdmSection& s, const EventObject& o) {
   }
   const Mat6 c = o.cov_rtn ? *o.cov_rtn : Mat6::Zero();
   const auto& keys = cdm_section_keywords(CdmSectionId::kCovariance);
-  for (int r = 0; r < 6; ++r) {
-    for (int k = 0; k <= r; ++k) {
+  for (Eigen::Index r = 0; r < 6; ++r) {
+    for (Eigen::Index k = 0; k <= r; ++k) {
       const std::string& key = keys[static_cast<std::size_t>(r * (r + 1) / 2 + k)];
       add(s, key, fmt("%.15e", c(r, k)), cdm_keyword_unit(key));
     }

@@ -20,9 +20,9 @@ M repair(const M& c, const std::string& what, bool* npd, double* min_eig) {
   if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) {
     throw std::invalid_argument(what + ": covariance is not symmetric");
   }
-  const M s = 0.5 * (c + c.transpose());
+  M s = 0.5 * (c + c.transpose());
   Eigen::SelfAdjointEigenSolver<M> es(s);
-  const auto l = es.eigenvalues();
+  const auto& l = es.eigenvalues();
   *min_eig = l.minCoeff();
   const double floor = std::max(1e-10 * l.maxCoeff(), 1e-12);
   *npd = *min_eig <= 0.0;

@@ -40,7 +40,7 @@ EncounterPlane encounter_plane(const StateEci& obj1, const Mat3& cov1_eci_m2,
 
 PrincipalEncounter principal_axes(const EncounterPlane& ep) {
   Eigen::SelfAdjointEigenSolver<Mat2> es(0.5 * (ep.cov_m2 + ep.cov_m2.transpose()));
-  const Vec2 l = es.eigenvalues();  // ascending
+  const Vec2& l = es.eigenvalues();  // ascending
   if (!(l(0) > 0.0)) {
     throw std::invalid_argument("encounter plane: combined covariance is not positive definite");
   }

@@ -17,6 +17,7 @@
 // and the Monte Carlo Pc (monte_carlo_pc.hpp) is the estimate to use.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -36,7 +37,7 @@ struct ObjectState {
 };
 
 struct ConjunctionInput {
-  ObjectState obj[2];
+  std::array<ObjectState, 2> obj;
   double hbr_m = 0.0;
   EarthModel earth = kEarthDefault;
 };
@@ -50,12 +51,12 @@ struct ShortTermCheck {
 };
 
 struct Assessment {
-  ObjectState at_tca[2];          ///< states and covariances used (after TCA shift, repair)
+  std::array<ObjectState, 2> at_tca;  ///< states and covariances used (after TCA shift, repair)
   double tca_shift_s = 0.0;       ///< TCA minus the epoch of the given states
   std::string tca_method;         ///< how the states were brought to TCA
   std::string covariance_propagation;
-  bool npd[2] = {false, false};   ///< covariance repaired by eigenvalue clipping
-  double min_eigenvalue[2] = {0.0, 0.0};
+  std::array<bool, 2> npd = {false, false};  ///< covariance repaired by eigenvalue clipping
+  std::array<double, 2> min_eigenvalue = {0.0, 0.0};
   EncounterPlane plane;
   PrincipalEncounter principal;
   Pc2dResult pc_2d;
@@ -67,7 +68,7 @@ struct Assessment {
 
 /// Throws std::invalid_argument on bad input (hbr <= 0, zero relative speed, TCA not found
 /// within tca_search_s).
-Assessment assess(const ConjunctionInput& in, const AssessConfig& cfg,
+Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
                   const std::optional<MonteCarloOptions>& mc = std::nullopt);
 
 /// The Monte Carlo window for an assessment: min((k sigma_max + HBR) / v_rel, P/2).

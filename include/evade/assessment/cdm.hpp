@@ -11,6 +11,7 @@
 // Units: positions km, velocities km/s (the standard's), converted to m, m/s by cdm_state.
 #pragma once
 
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,7 +54,7 @@ struct CdmObject {
 struct Cdm {
   CdmSection header;    ///< CCSDS_CDM_VERS, CREATION_DATE, ORIGINATOR, MESSAGE_FOR, MESSAGE_ID
   CdmSection relative;  ///< TCA, MISS_DISTANCE, relative state, screening volume, Pc
-  CdmObject object[2];
+  std::array<CdmObject, 2> object;
   bool operator==(const Cdm& o) const;
 };
 

@@ -22,6 +22,7 @@
 // position covariance).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -43,7 +44,7 @@ struct EventObject {
 };
 
 struct ScreeningEvent {
-  EventObject obj[2];
+  std::array<EventObject, 2> obj;
   double tca_utc_j2000_s = 0.0;  ///< TCA, UTC seconds since J2000
   double miss_m = 0.0;           ///< the screener's miss distance at TCA [m]
   double rel_speed_mps = 0.0;    ///< the screener's |v2 - v1| at TCA [m/s]
