@@ -20,6 +20,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -405,10 +406,10 @@ class Dop853 {
   Vector f_now_;    // f(t_, x_): stage 1 of the next step
   Vector k1_step_;  // stage 1 of the last accepted step
   Vector k13_;
-  Vector k_[11];    // stages 2..12
+  std::array<Vector, 11> k_;  // stages 2..12
   mutable Vector y_;
   mutable Vector k14_, k15_, k16_;
-  mutable Vector cont_[8];
+  mutable std::array<Vector, 8> cont_;
   mutable bool dense_ready_ = false;
   mutable IntegrationStats stats_;
   std::string failure_;
