@@ -42,6 +42,13 @@ std::vector<std::string> split_csv(const std::string& line) {
   return out;
 }
 
+std::invalid_argument not_a_number(long line_no, std::size_t k, const std::string& name,
+                                   const std::string& cell) {
+  return std::invalid_argument("CSV line " + std::to_string(line_no) + " (object " +
+                               std::to_string(k) + "): " + name + " = '" + cell +
+                               "' is not a finite number");
+}
+
 }  // namespace
 
 std::vector<SpaceObject> objects_from_scenario(const config::Scenario& sc, const EarthModel& earth) {
@@ -135,9 +142,7 @@ std::vector<SpaceObject> objects_from_csv(const std::string& text, const EarthMo
       char* end = nullptr;
       const double v = std::strtod(s.c_str(), &end);
       if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v)) {
-        throw std::invalid_argument("CSV line " + std::to_string(line_no) + " (object " +
-                                    std::to_string(k) + "): " + name + " = '" + s +
-                                    "' is not a finite number");
+        throw not_a_number(line_no, k, name, s);
       }
       return v;
     };

@@ -57,9 +57,10 @@ std::vector<SpaceObject> synthetic_population(const PopulationOptions& opt) {
     return oe;
   };
 
-  const auto n_co = static_cast<std::size_t>(std::floor(opt.count * opt.coorbital_fraction / 2.0)) * 2;
-  const auto n_cx = static_cast<std::size_t>(std::floor(opt.count * opt.crossing_fraction / 2.0)) * 2;
-  const auto n_tg = static_cast<std::size_t>(std::floor(opt.count * opt.tangent_fraction / 2.0)) * 2;
+  const auto n_total = static_cast<double>(opt.count);
+  const auto n_co = static_cast<std::size_t>(std::floor(n_total * opt.coorbital_fraction / 2.0)) * 2;
+  const auto n_cx = static_cast<std::size_t>(std::floor(n_total * opt.crossing_fraction / 2.0)) * 2;
+  const auto n_tg = static_cast<std::size_t>(std::floor(n_total * opt.tangent_fraction / 2.0)) * 2;
   const std::size_t n_bg = opt.count - n_co - n_cx - n_tg;
   std::vector<SpaceObject> out;
   out.reserve(opt.count);
