@@ -28,6 +28,12 @@ int month_length(int year, int month) {
 
 }  // namespace
 
+long digits_value(const std::string& digits) {
+  long v = 0;
+  for (char c : digits) v = v * 10 + (c - '0');
+  return v;
+}
+
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r\n");
   if (b == std::string::npos) return "";
@@ -63,7 +69,7 @@ bool parse_plain_integer(const std::string& field, long& out) {
   const bool neg = !t.empty() && t[0] == '-';
   if (!t.empty() && (t[0] == '+' || t[0] == '-')) t = t.substr(1);
   if (!all_digits(t) || t.size() > 12) return false;
-  out = std::atol(t.c_str()) * (neg ? -1 : 1);
+  out = digits_value(t) * (neg ? -1 : 1);
   return true;
 }
 
@@ -75,12 +81,12 @@ bool parse_alpha5(const std::string& field, long& out) {
     int v = c - 'A' + 10;
     if (c > 'I') --v;
     if (c > 'O') --v;
-    out = v * 10000L + std::atol(field.substr(1).c_str());
+    out = v * 10000L + digits_value(field.substr(1));
     return true;
   }
   const std::string t = trim(field);
   if (!all_digits(t) || field.back() == ' ') return false;
-  out = std::atol(t.c_str());
+  out = digits_value(t);
   return true;
 }
 
@@ -93,14 +99,14 @@ bool parse_iso_epoch(const std::string& text, int& year, double& day_of_year) {
   int doy = 0;
   if (date.size() == 10 && date[4] == '-' && date[7] == '-' && all_digits(date.substr(0, 4)) &&
       all_digits(date.substr(5, 2)) && all_digits(date.substr(8, 2))) {
-    year = std::atoi(date.substr(0, 4).c_str());
-    const int month = std::atoi(date.substr(5, 2).c_str());
-    const int day = std::atoi(date.substr(8, 2).c_str());
+    year = static_cast<int>(digits_value(date.substr(0, 4)));
+    const auto month = static_cast<int>(digits_value(date.substr(5, 2)));
+    const auto day = static_cast<int>(digits_value(date.substr(8, 2)));
     if (month < 1 || month > 12 || day < 1 || day > month_length(year, month)) return false;
     doy = cumulative_days(year, month) + day;
   } else if (date.size() == 8 && date[4] == '-' && all_digits(date.substr(0, 4)) && all_digits(date.substr(5, 3))) {
-    year = std::atoi(date.substr(0, 4).c_str());
-    doy = std::atoi(date.substr(5, 3).c_str());
+    year = static_cast<int>(digits_value(date.substr(0, 4)));
+    doy = static_cast<int>(digits_value(date.substr(5, 3)));
     if (doy < 1 || doy > cumulative_days(year, 12) + 31) return false;
   } else {
     return false;
@@ -113,7 +119,8 @@ bool parse_iso_epoch(const std::string& text, int& year, double& day_of_year) {
   const std::string secs = time.substr(6);
   if (!all_digits(secs.substr(0, 2)) || !parse_plain_decimal(secs, sec) || secs.find_first_of("eE+-") != std::string::npos)
     return false;
-  const int hh = std::atoi(time.substr(0, 2).c_str()), mm = std::atoi(time.substr(3, 2).c_str());
+  const auto hh = static_cast<int>(digits_value(time.substr(0, 2)));
+  const auto mm = static_cast<int>(digits_value(time.substr(3, 2)));
   if (hh > 23 || mm > 59 || !(sec >= 0.0 && sec < 60.0)) return false;
   day_of_year = doy + (hh * 3600.0 + mm * 60.0 + sec) / 86400.0;
   return true;

@@ -53,7 +53,8 @@ class TleLine {
     if (!ok) fail(first, what + " as an implied-decimal field like ' 12345-4'", f);
     std::string digits = mant;
     for (char& c : digits) if (c == ' ') c = '0';
-    const double m = std::atof(("0." + digits).c_str()) * (sign == '-' ? -1.0 : 1.0);
+    // strtod as atof is defined (C11 7.22.1.2); the digits are checked above.
+    const double m = std::strtod(("0." + digits).c_str(), nullptr) * (sign == '-' ? -1.0 : 1.0);
     const int e = (expd[0] - '0') * (exps == "-" ? -1 : 1);
     return m * std::pow(10.0, e);
   }
@@ -61,7 +62,7 @@ class TleLine {
     const std::string f = cols(first, last);
     const std::string t = trim(f);
     for (char c : t) if (!std::isdigit(static_cast<unsigned char>(c))) fail(first, what, f);
-    return t.empty() ? 0 : std::atoi(t.c_str());
+    return static_cast<int>(digits_value(t));  // a digits-only field of at most 5 columns
   }
   long catalog_number(int first) const {
     const std::string f = cols(first, first + 4);
@@ -85,7 +86,7 @@ void check_frame(const TleLine& l, char first_char, const TleReadOptions& opt) {
   l.expect_blank(2);
   if (s.size() < 69)
     l.fail(static_cast<int>(s.size()) + 1, "a 69-column line", "end of line after column " + std::to_string(s.size()));
-  if (!opt.allow_trailing_text && trim(s.substr(69)).size() > 0) l.fail(70, "nothing after column 69", s.substr(69));
+  if (!opt.allow_trailing_text && !trim(s.substr(69)).empty()) l.fail(70, "nothing after column 69", s.substr(69));
   if (!opt.check_checksum) return;
   const char c = s[68];
   const int want = tle_checksum(s);
@@ -135,7 +136,7 @@ void read_line2(const TleLine& l, MeanElements& m) {
   for (char c : e)
     if (!std::isdigit(static_cast<unsigned char>(c)))
       l.fail(27, "an eccentricity as 7 digits with an implied leading decimal point", l.cols(27, 33));
-  m.eccentricity = std::atof(("0." + e).c_str());
+  m.eccentricity = std::strtod(("0." + e).c_str(), nullptr);  // atof's definition; digits checked
   l.expect_blank(34);
   m.arg_perigee_deg = l.number(35, 42, "an argument of perigee in [0, 360] deg", 0.0, 360.0);
   l.expect_blank(43);

@@ -9,6 +9,10 @@ namespace evade::sgp4 {
 /// Trims spaces, tabs, CR and LF at both ends.
 std::string trim(const std::string& s);
 
+/// Value of a field of decimal digits only, as the readers' fixed-width fields are once
+/// checked (callers check; at most 18 digits, so no overflow). "" is 0.
+long digits_value(const std::string& digits);
+
 /// A decimal number, optionally signed, with optional fraction and exponent ("-.00000084",
 /// "1.5E-4", "42"), surrounded by blanks only. False for anything else.
 bool parse_plain_decimal(const std::string& field, double& out);
