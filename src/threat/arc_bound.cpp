@@ -49,7 +49,7 @@ ArcBound::ArcBound(const ThreatAreaSolver& solver) : solver_(solver) {
   const double n = solver.geometry().n_radps;
   const long k = static_cast<long>(std::ceil(o.span_s / o.step_s - 1e-9));
   for (long i = 0; i < k; ++i) {
-    const double t = i * o.step_s;
+    const double t = static_cast<double>(i) * o.step_s;
     t_.push_back(t);
     w_.push_back(solver.required_change(t, Vec3::Zero()));
     b_.push_back(impulse_matrix(n, t + o.transfer_s));

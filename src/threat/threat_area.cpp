@@ -90,7 +90,7 @@ ThreatAreaSolver::ThreatAreaSolver(const ThreatGeometry& geom, const ThreatOptio
   w_grid_.reserve(k);
   b_grid_.reserve(k);
   for (long i = 0; i < k; ++i) {
-    const double t = i * opt_.step_s;
+    const double t = static_cast<double>(i) * opt_.step_s;
     t_grid_.push_back(t);
     w_grid_.push_back(hcw_propagate(geom_.n_radps, t + opt_.transfer_s, rel0));
     b_grid_.push_back(impulse_matrix(geom_.n_radps, t + opt_.transfer_s));
@@ -99,16 +99,16 @@ ThreatAreaSolver::ThreatAreaSolver(const ThreatGeometry& geom, const ThreatOptio
 
 double ThreatAreaSolver::period_s() const { return kTwoPi / geom_.n_radps; }
 
-Vec6 ThreatAreaSolver::required_change(double t_s, const Vec3& dv_e) const {
+Vec6 ThreatAreaSolver::required_change(double t_s, const Vec3& evasion_dv_rsw_mps) const {
   const double tf = t_s + opt_.transfer_s;
   return hcw_propagate(geom_.n_radps, tf, geom_.target0_rsw - geom_.chaser0_rsw) +
-         impulse_matrix(geom_.n_radps, tf) * dv_e;
+         impulse_matrix(geom_.n_radps, tf) * evasion_dv_rsw_mps;
 }
 
-RendezvousPlan ThreatAreaSolver::min_cost_plan(double t_s, const Vec3& dv_e) const {
+RendezvousPlan ThreatAreaSolver::min_cost_plan(double t_s, const Vec3& evasion_dv_rsw_mps) const {
   SqpOptions s = opt_.sqp;
   s.stop_at_cost_mps = -1.0;
-  return optimize_rendezvous(tr_, required_change(t_s, dv_e), s);
+  return optimize_rendezvous(tr_, required_change(t_s, evasion_dv_rsw_mps), s);
 }
 
 bool ThreatAreaSolver::threatening(const Vec6& d, DecisionCounts& counts) const {
@@ -233,21 +233,22 @@ void ThreatAreaSolver::refine_edges(const std::vector<Edge>& edges, const Vec3& 
   });
 }
 
-ThreatArea ThreatAreaSolver::evaluate(const Vec3& dv_e) const {
-  if (!dv_e.allFinite()) {
+ThreatArea ThreatAreaSolver::evaluate(const Vec3& evasion_dv_rsw_mps) const {
+  if (!evasion_dv_rsw_mps.allFinite()) {
     throw std::invalid_argument("threat area: evasion dv_rsw_mps is not finite");
   }
   const long k = static_cast<long>(t_grid_.size());
   const int nthreads = static_cast<int>(std::min<long>(opt_.threads, k));
   std::vector<DecisionCounts> counts(nthreads);
-  const std::vector<char> threat = sweep_grid(dv_e, counts);
+  const std::vector<char> threat = sweep_grid(evasion_dv_rsw_mps, counts);
 
   ThreatArea out;
   out.points = k;
   for (long i = 0; i < k; ++i) out.threatening_points += threat[i];
-  out.grid_arc_s = out.threatening_points * opt_.step_s;
-  const std::vector<Edge> edges = grid_intervals(threat, dv_e, counts[0], out.intervals);
-  refine_edges(edges, dv_e, counts, out.intervals);
+  out.grid_arc_s = static_cast<double>(out.threatening_points) * opt_.step_s;
+  const std::vector<Edge> edges =
+      grid_intervals(threat, evasion_dv_rsw_mps, counts[0], out.intervals);
+  refine_edges(edges, evasion_dv_rsw_mps, counts, out.intervals);
   for (const auto& iv : out.intervals) out.arc_s += iv.end_s - iv.start_s;
   out.arc_deg = out.arc_s / period_s() * 360.0;
   for (const auto& c : counts) out.counts += c;
