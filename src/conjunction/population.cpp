@@ -56,7 +56,6 @@ std::vector<SpaceObject> synthetic_population(const PopulationOptions& opt) {
     oe.true_anomaly_rad = true_from_mean_anomaly(uni(0.0, kTwoPi), oe.e);
     return oe;
   };
-
   const auto n_total = static_cast<double>(opt.count);
   const auto n_co = static_cast<std::size_t>(std::floor(n_total * opt.coorbital_fraction / 2.0)) * 2;
   const auto n_cx = static_cast<std::size_t>(std::floor(n_total * opt.crossing_fraction / 2.0)) * 2;
