@@ -47,16 +47,10 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
   const char* names[kInCount] = {kChanAngles, kChanNav, kChanArm};
   for (std::size_t c = 0; c < ctx_.size(); ++c) {
     ctx_[c] = SubContext{this, static_cast<int>(c)};  // c < kInCount: fits in int
-    subs_[c] = subscribe(names[c], &GuidanceNode::on_input, &ctx_[c]);
-    // LCM's own per-subscription queue (udpm default 30) would drop bursts silently before
-    // our accounting sees them; make it large so the bounded queue we count is ours.
-    lcm_subscription_set_queue_capacity(subs_[c], 10000);
+    subs_[c] = subscribe(names[c], &GuidanceNode::on_input, &ctx_[c], true);
   }
-  if (cfg_.lockstep) {
-    clock_sub_ = subscribe(kChanClock, &GuidanceNode::on_clock, this);
-    lcm_subscription_set_queue_capacity(clock_sub_, 10000);
-  }
-  plan_sub_ = subscribe(kChanPlan, &GuidanceNode::on_plan, this);
+  if (cfg_.lockstep) clock_sub_ = subscribe(kChanClock, &GuidanceNode::on_clock, this, true);
+  plan_sub_ = subscribe(kChanPlan, &GuidanceNode::on_plan, this, false);
   input_.armed = armed_;
 }
 
@@ -65,23 +59,31 @@ GuidanceNode::~GuidanceNode() { unsubscribe_all(); }
 // A refused subscription undoes the ones already made before the constructor throws: the
 // destructor does not run for a node that failed to construct, and LCM would otherwise keep
 // calling back into it.
+// deep_queue: LCM's own per-subscription queue (udpm default 30) would drop bursts silently
+// before our accounting sees them; the input channels get a large one, so that the bounded
+// queue that drops and counts is ours. Refused like a subscription when LCM refuses it.
 lcm_subscription_t* GuidanceNode::subscribe(const char* channel, lcm_msg_handler_t handler,
-                                            void* user) {
+                                            void* user, bool deep_queue) {
   lcm_subscription_t* s = lcm_subscribe(lcm_, channel, handler, user);
-  if (s == nullptr) {
-    unsubscribe_all();
-    throw std::runtime_error(std::string("GuidanceNode: cannot subscribe to ") + channel);
-  }
-  return s;
+  const bool queue_ok = s == nullptr || !deep_queue ||
+                        lcm_subscription_set_queue_capacity(s, 10000) == 0;
+  if (s != nullptr && queue_ok) return s;
+  if (s != nullptr) (void)lcm_unsubscribe(lcm_, s);  // failing already: its result adds nothing
+  unsubscribe_all();
+  throw std::runtime_error(std::string(s == nullptr ? "GuidanceNode: cannot subscribe to "
+                                                    : "GuidanceNode: cannot size the LCM queue of ") +
+                           channel);
 }
 
+// Teardown: a subscription LCM fails to remove leaves nothing the node could do about it,
+// so lcm_unsubscribe's result is discarded.
 void GuidanceNode::unsubscribe_all() noexcept {
   for (auto*& s : subs_) {
-    if (s != nullptr) lcm_unsubscribe(lcm_, s);
+    if (s != nullptr) (void)lcm_unsubscribe(lcm_, s);
     s = nullptr;
   }
-  if (clock_sub_ != nullptr) lcm_unsubscribe(lcm_, clock_sub_);
-  if (plan_sub_ != nullptr) lcm_unsubscribe(lcm_, plan_sub_);
+  if (clock_sub_ != nullptr) (void)lcm_unsubscribe(lcm_, clock_sub_);
+  if (plan_sub_ != nullptr) (void)lcm_unsubscribe(lcm_, plan_sub_);
   clock_sub_ = nullptr;
   plan_sub_ = nullptr;
 }
@@ -297,7 +299,7 @@ const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept 
   cmd = guidance::merge_plan_thrust(cmd, plan_exec_.step(input_.nav, armed_, cmd.mode, now_us));
   cmd.utime_us = now_us;
   to_lcm(cmd, ++cmd_seq_, have_angles_ ? last_angles_utime_ : -1, &cmd_msg_);
-  cmd_pub_.publish(cmd_msg_);
+  if (cmd_pub_.publish(cmd_msg_) != 0) ++publish_failures_;
   ++cycles_;
 
   if (cycles_ % cfg_.status_divider == 0) {
@@ -319,7 +321,7 @@ const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept 
     status_msg_.cycle_p99_us = compute_.quantile(0.99);
     status_msg_.cycle_max_us = compute_.max_us();
     to_lcm(plan_exec_.status(), &status_msg_);
-    status_pub_.publish(status_msg_);
+    if (status_pub_.publish(status_msg_) != 0) ++publish_failures_;
   }
   return cmd_msg_;
 }

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "evade/guidance_lcm/channels.hpp"
@@ -23,6 +24,8 @@ extern "C" {
 lcm_subscription_t* __real_lcm_subscribe(lcm_t* lcm, const char* channel,
                                          lcm_msg_handler_t handler, void* user);
 int __real_lcm_unsubscribe(lcm_t* lcm, lcm_subscription_t* sub);
+int __real_lcm_subscription_set_queue_capacity(lcm_subscription_t* sub, int num_messages);
+int __real_lcm_publish(lcm_t* lcm, const char* channel, const void* data, unsigned int datalen);
 }
 
 namespace {
@@ -30,6 +33,10 @@ namespace {
 const char* g_refused_channel = nullptr;            // the channel LCM refuses, if any
 std::vector<lcm_subscription_t*> g_live;            // subscriptions made and not yet undone
 std::vector<std::string> g_subscribed_channels;     // every channel subscribed, in order
+std::vector<std::pair<lcm_subscription_t*, std::string>> g_channel_of;  // live sub -> channel
+const char* g_refused_queue_channel = nullptr;      // the channel whose queue LCM refuses to size
+bool g_refuse_publish = false;                      // LCM refuses every publish
+int g_publish_refusals = 0;                         // publishes refused
 
 }  // namespace
 
@@ -41,8 +48,25 @@ extern "C" lcm_subscription_t* __wrap_lcm_subscribe(lcm_t* lcm, const char* chan
   if (s != nullptr) {
     g_live.push_back(s);
     g_subscribed_channels.emplace_back(channel);
+    g_channel_of.emplace_back(s, channel);
   }
   return s;
+}
+
+extern "C" int __wrap_lcm_subscription_set_queue_capacity(lcm_subscription_t* sub, int n) {
+  for (const auto& sc : g_channel_of)
+    if (sc.first == sub && g_refused_queue_channel != nullptr && sc.second == g_refused_queue_channel)
+      return -1;
+  return __real_lcm_subscription_set_queue_capacity(sub, n);
+}
+
+extern "C" int __wrap_lcm_publish(lcm_t* lcm, const char* channel, const void* data,
+                                  unsigned int datalen) {
+  if (g_refuse_publish) {
+    ++g_publish_refusals;
+    return -1;
+  }
+  return __real_lcm_publish(lcm, channel, data, datalen);
 }
 
 extern "C" int __wrap_lcm_unsubscribe(lcm_t* lcm, lcm_subscription_t* sub) {
@@ -62,10 +86,18 @@ class NodeSubscriptions : public ::testing::Test {
  protected:
   void SetUp() override {
     g_refused_channel = nullptr;
+    g_refused_queue_channel = nullptr;
+    g_refuse_publish = false;
+    g_publish_refusals = 0;
     g_live.clear();
     g_subscribed_channels.clear();
+    g_channel_of.clear();
   }
-  void TearDown() override { g_refused_channel = nullptr; }
+  void TearDown() override {
+    g_refused_channel = nullptr;
+    g_refused_queue_channel = nullptr;
+    g_refuse_publish = false;
+  }
   std::unique_ptr<lcm_t, LcmDeleter> lcm_{lcm_create("memq://")};
 };
 
@@ -145,6 +177,52 @@ TEST_F(NodeSubscriptions, NullLcmOrBadConfigThrowsInvalidArgumentAndSubscribesNo
     EXPECT_NE(std::string(e.what()).find("queue_capacity"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(g_subscribed_channels.empty());
+}
+
+}  // namespace
+}  // namespace evade::guidance_lcm
+
+namespace evade::guidance_lcm {
+namespace {
+
+// An input channel whose LCM queue cannot be deepened would drop bursts before the node's
+// accounting sees them: the node refuses to start, naming the channel, and leaves no
+// subscription behind (the plan channel keeps LCM's default queue and is never sized).
+TEST_F(NodeSubscriptions, RefusedQueueSizeThrowsNamingTheChannelAndLeavesNoSubscription) {
+  ASSERT_NE(lcm_, nullptr);
+  for (const char* channel : {kChanAngles, kChanNav, kChanArm, kChanClock}) {
+    g_live.clear();
+    g_channel_of.clear();
+    g_refused_queue_channel = channel;
+    NodeConfig cfg;
+    cfg.lockstep = true;
+    std::string why;
+    try {
+      GuidanceNode node(lcm_.get(), cfg);
+    } catch (const std::runtime_error& e) {
+      why = e.what();
+    }
+    EXPECT_EQ(why, std::string("GuidanceNode: cannot size the LCM queue of ") + channel);
+    EXPECT_TRUE(g_live.empty()) << g_live.size() << " subscription(s) left behind";
+  }
+}
+
+// A command or status LCM refuses to send is counted; the loop goes on (the next cycle's
+// command supersedes it) and sends again once LCM accepts.
+TEST_F(NodeSubscriptions, RefusedPublishIsCountedAndTheLoopGoesOn) {
+  ASSERT_NE(lcm_, nullptr);
+  GuidanceNode node(lcm_.get(), NodeConfig{});
+  g_refuse_publish = true;
+  std::int64_t t_us = 1'000'000;
+  for (int k = 0; k < 25; ++k, t_us += 20'000) (void)node.run_cycle(t_us);
+  EXPECT_GE(g_publish_refusals, 25);  // 25 commands, and the status messages due
+  EXPECT_EQ(node.publish_failures(), g_publish_refusals);
+  EXPECT_EQ(node.cycles(), 25);
+  g_refuse_publish = false;
+  const int refused = g_publish_refusals;
+  for (int k = 0; k < 5; ++k, t_us += 20'000) (void)node.run_cycle(t_us);
+  EXPECT_EQ(node.publish_failures(), refused);
+  EXPECT_EQ(node.cycles(), 30);
 }
 
 }  // namespace

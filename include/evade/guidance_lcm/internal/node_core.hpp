@@ -73,6 +73,9 @@ class GuidanceNode {
   const evade_thrust_cmd_t& last_command() const noexcept { return cmd_msg_; }
   const evade_guidance_status_t& last_status() const noexcept { return status_msg_; }
   std::int64_t cycles() const noexcept { return cycles_; }
+  /// Commands and status messages LCM refused to send (encode or send failure): the cycle
+  /// goes on, the next cycle's command supersedes the lost one, and the loss is counted.
+  std::int64_t publish_failures() const noexcept { return publish_failures_; }
   std::int64_t watchdog_cycles() const noexcept { return law_.status().watchdog_cycles; }
   std::int64_t ticks_received() const noexcept { return ticks_received_; }
   std::int64_t ticks_missed() const noexcept { return ticks_missed_; }
@@ -85,7 +88,8 @@ class GuidanceNode {
     GuidanceNode* node;
     int channel;
   };
-  lcm_subscription_t* subscribe(const char* channel, lcm_msg_handler_t handler, void* user);
+  lcm_subscription_t* subscribe(const char* channel, lcm_msg_handler_t handler, void* user,
+                                bool deep_queue);
   void unsubscribe_all() noexcept;
   static void on_input(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
   static void on_clock(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
@@ -123,6 +127,7 @@ class GuidanceNode {
   bool have_angles_ = false;
   std::int64_t last_angles_utime_ = -1;
   std::int64_t cycles_ = 0;
+  std::int64_t publish_failures_ = 0;
 
   // Uplinked burn plans (EVADE_BURN_PLAN): own bounded inbox, the executor, a decode buffer.
   lcm_subscription_t* plan_sub_ = nullptr;
