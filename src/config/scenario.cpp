@@ -168,7 +168,7 @@ std::string first_bad_byte(const std::string& text) {
 // Scenario text is UTF-8 of YAML's printable characters; anything else is refused here,
 // naming the line, the column and the byte, before it can reach a key, a value or a JSON
 // result (JSON output cannot carry it). Found by fuzzing (docs/ASSURANCE.md, findings 3, 9).
-void require_utf8(const std::string& text, const std::string& where) {
+void require_yaml_text(const std::string& text, const std::string& where) {
   const std::string bad = first_bad_byte(text);
   if (!bad.empty()) throw ConfigError(where + ": " + bad);
 }
@@ -204,7 +204,7 @@ Scenario::Scenario(json tree, std::string source) : tree_(std::move(tree)), sour
 Scenario Scenario::empty(const std::string& source_name) { return Scenario(json::object(), source_name); }
 
 Scenario Scenario::from_yaml_string(const std::string& yaml, const std::string& source_name) {
-  require_utf8(yaml, source_name);
+  require_yaml_text(yaml, source_name);
   try {
     return Scenario(to_json(YAML::Load(yaml), source_name), source_name);
   } catch (const YAML::Exception& e) {
@@ -241,7 +241,7 @@ Scenario Scenario::load(const std::string& name_or_path) {
 }
 
 void Scenario::apply_override(const std::string& assignment) {
-  require_utf8(assignment, "--set");
+  require_yaml_text(assignment, "--set");
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw ConfigError("--set '" + assignment + "': expected key.path=value");
