@@ -71,8 +71,14 @@ function(evade_add_test name)
   if(T_RUN_SERIAL)
     set(serial TRUE)  # timing- or network-sensitive: never beside another test
   endif()
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-    PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}" RUN_SERIAL ${serial})
+  # An empty LABELS value would vanish from the property list and make "RUN_SERIAL" a label.
+  if(T_LABELS)
+    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+      PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}" RUN_SERIAL ${serial})
+  else()
+    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+      PROPERTIES TIMEOUT ${T_TIMEOUT} RUN_SERIAL ${serial})
+  endif()
 endfunction()
 
 # evade_add_cli_test(<name> <label> <expected_rc> <expected_text> <args>...)

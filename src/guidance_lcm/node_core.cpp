@@ -22,6 +22,17 @@ std::int64_t monotonic_us() noexcept {
   return static_cast<std::int64_t>(ts.tv_sec) * 1000000 + ts.tv_nsec / 1000;
 }
 
+std::int8_t auth_mask(const AuthPolicy& p) noexcept {
+  using S = evade_guidance_status_t;
+  int m = S::AUTH_KEY_CMD;  // always required
+  if (p.plan_required) m |= S::AUTH_PLAN;
+  if (p.arm_required) m |= S::AUTH_ARM;
+  if (p.nav_required) m |= S::AUTH_NAV;
+  if (p.angles_required) m |= S::AUTH_ANGLES;
+  if (p.clock_required) m |= S::AUTH_CLOCK;
+  return static_cast<std::int8_t>(m);  // six bits: fits in int8
+}
+
 }  // namespace
 
 static const NodeConfig& checked(const NodeConfig& cfg) {
@@ -30,7 +41,8 @@ static const NodeConfig& checked(const NodeConfig& cfg) {
   return cfg;
 }
 
-GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
+GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm,
+                           const NodeSecurity& sec)
     : lcm_(lcm),
       cfg_(checked(cfg)),
       law_(cfg.guidance),
@@ -41,16 +53,27 @@ GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm)
            SeqTracker(cfg.max_seq_jump)},
       armed_(cfg.guidance.armed),
       plan_exec_(guidance::PlanExecutorConfig::from(cfg.guidance)),
+      keys_(sec.keys),
+      state_file_(sec.state_path),
       cmd_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmd),
       status_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanStatus) {
   if (lcm_ == nullptr) throw std::invalid_argument("GuidanceNode: lcm is null");
+  state_file_.load(&keys_);
+  keys_.raise_sensor_floor(sec.sensor_arsn_floor_us);
+  keys_.mark_persisted();
+  auth_required_mask_ = auth_mask(cfg_.auth);
+  verify_budget_left_ = cfg_.auth.max_verify_per_cycle;
   const char* names[kInCount] = {kChanAngles, kChanNav, kChanArm};
-  for (std::size_t c = 0; c < ctx_.size(); ++c) {
+  for (std::size_t c = 0; c < kInArm; ++c) {
     ctx_[c] = SubContext{this, static_cast<int>(c)};  // c < kInCount: fits in int
     subs_[c] = subscribe(names[c], &GuidanceNode::on_input, &ctx_[c], true);
   }
   if (cfg_.lockstep) clock_sub_ = subscribe(kChanClock, &GuidanceNode::on_clock, this, true);
-  plan_sub_ = subscribe(kChanPlan, &GuidanceNode::on_plan, this, false);
+  const char* cmd_names[kCmdCount] = {kChanPlan, kChanArm, kChanKeyCmd};
+  for (std::size_t c = 0; c < cmd_ctx_.size(); ++c) {
+    cmd_ctx_[c] = SubContext{this, static_cast<int>(c)};  // c < kCmdCount: fits in int
+    cmd_subs_[c] = subscribe(cmd_names[c], &GuidanceNode::on_command, &cmd_ctx_[c], true);
+  }
   input_.armed = armed_;
 }
 
@@ -60,8 +83,9 @@ GuidanceNode::~GuidanceNode() { unsubscribe_all(); }
 // destructor does not run for a node that failed to construct, and LCM would otherwise keep
 // calling back into it.
 // deep_queue: LCM's own per-subscription queue (udpm default 30) would drop bursts silently
-// before our accounting sees them; the input channels get a large one, so that the bounded
-// queue that drops and counts is ours. Refused like a subscription when LCM refuses it.
+// before our accounting sees them; every input and command channel gets a large one, so that
+// the bounded queues that drop and count are ours (a flood of 20,000 plans per second is
+// counted message by message: docs/SECURITY.md AUTH-5). Refused like a subscription when LCM refuses it.
 lcm_subscription_t* GuidanceNode::subscribe(const char* channel, lcm_msg_handler_t handler,
                                             void* user, bool deep_queue) {
   lcm_subscription_t* s = lcm_subscribe(lcm_, channel, handler, user);
@@ -82,10 +106,12 @@ void GuidanceNode::unsubscribe_all() noexcept {
     if (s != nullptr) (void)lcm_unsubscribe(lcm_, s);
     s = nullptr;
   }
+  for (auto*& s : cmd_subs_) {
+    if (s != nullptr) (void)lcm_unsubscribe(lcm_, s);
+    s = nullptr;
+  }
   if (clock_sub_ != nullptr) (void)lcm_unsubscribe(lcm_, clock_sub_);
-  if (plan_sub_ != nullptr) (void)lcm_unsubscribe(lcm_, plan_sub_);
   clock_sub_ = nullptr;
-  plan_sub_ = nullptr;
 }
 
 void GuidanceNode::on_input(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
@@ -94,6 +120,13 @@ void GuidanceNode::on_input(const lcm_recv_buf_t* rbuf, const char*, void* user)
   ++self->counts_.received;
   if (rbuf->data_size > kMaxInputBytes) {  // no input type is this large: corrupt
     self->counts_.add(Verdict::kRejected, Reason::kOversize);
+    return;
+  }
+  const bool angles = ctx->channel == kInAngles;
+  const std::int8_t bit = angles ? evade_guidance_status_t::AUTH_ANGLES : evade_guidance_status_t::AUTH_NAV;
+  if ((self->auth_required_mask_ & bit) != 0 &&
+      !self->authenticate(angles ? auth::ArsnSlot::kAngles : auth::ArsnSlot::kNav,
+                          angles ? kChanAngles : kChanNav, rbuf)) {
     return;
   }
   int dropped_channel = -1;
@@ -107,6 +140,10 @@ void GuidanceNode::on_input(const lcm_recv_buf_t* rbuf, const char*, void* user)
 
 void GuidanceNode::on_clock(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
   auto* self = static_cast<GuidanceNode*>(user);
+  if ((self->auth_required_mask_ & evade_guidance_status_t::AUTH_CLOCK) != 0 &&
+      !self->authenticate(auth::ArsnSlot::kClock, kChanClock, rbuf)) {
+    return;  // counted; not a tick
+  }
   evade_sim_clock_t tick{};
   if (tick.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) !=
           static_cast<int>(rbuf->data_size) ||
@@ -119,52 +156,6 @@ void GuidanceNode::on_clock(const lcm_recv_buf_t* rbuf, const char*, void* user)
   if (self->tick_pending_) ++self->ticks_missed_;  // previous tick never got its cycle
   self->tick_pending_ = true;
   self->tick_utime_ = tick.utime;
-}
-
-// EVADE_BURN_PLAN (PLAN-IN-1): counted like every input; bytes into the plan inbox.
-void GuidanceNode::on_plan(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
-  auto* self = static_cast<GuidanceNode*>(user);
-  ++self->counts_.received;
-  if (rbuf->data_size > kMaxPlanBytes) {
-    self->counts_.add(Verdict::kRejected, Reason::kOversize);
-    return;
-  }
-  if (!self->plan_inbox_.push(rbuf->data, rbuf->data_size)) self->counts_.add(Verdict::kDropped);
-}
-
-// One plan message: decode, time and field checks, then the executor's validation. Every
-// message ends consumed (accepted), rejected or stale (plan id not newer).
-void GuidanceNode::admit_plan(const PlanInbox::Slot& raw, std::int64_t now_us) noexcept {
-  const int n = plan_msg_.decode(raw.data.data(), 0, static_cast<int>(raw.size));
-  if (n < 0 || n != static_cast<int>(raw.size)) {
-    counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
-    return;
-  }
-  if (plan_msg_.utime > now_us + future_us_) {
-    counts_.add(Verdict::kRejected, Reason::kFromFuture);
-    return;
-  }
-  guidance::PlanReject r = burn_plan_message_reject(plan_msg_);
-  if (r != guidance::PlanReject::kNone) {
-    plan_exec_.count_rejection(r);
-  } else if (from_lcm(plan_msg_, &plan_)) {
-    r = plan_exec_.load(plan_, now_us, armed_, law_.status().dv_used_mps);
-  }
-  if (r == guidance::PlanReject::kNone) {
-    counts_.add(Verdict::kConsumed);
-  } else if (r == guidance::PlanReject::kNotNewer) {
-    counts_.add(Verdict::kStale, Reason::kOutOfOrderSeq);
-  } else {
-    counts_.add(Verdict::kRejected, r == guidance::PlanReject::kNotFinite ? Reason::kNotFinite
-                                                                          : Reason::kOutOfRange);
-  }
-}
-
-void GuidanceNode::process_plans(std::int64_t now_us) noexcept {
-  while (!plan_inbox_.empty()) {
-    admit_plan(plan_inbox_.front(), now_us);
-    plan_inbox_.pop();
-  }
 }
 
 int GuidanceNode::drain() noexcept {
@@ -192,9 +183,10 @@ int GuidanceNode::wait_for_tick(int timeout_ms, std::int64_t* tick_utime) noexce
 }
 
 template <typename Msg>
-bool GuidanceNode::admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) noexcept {
-  const int n = msg->decode(raw.data.data(), 0, static_cast<int>(raw.size));
-  if (n < 0 || n != static_cast<int>(raw.size)) {  // wrong type, truncated or trailing bytes
+bool GuidanceNode::admit(int channel, const std::uint8_t* data, std::uint32_t size,
+                         std::int64_t now_us, Msg* msg) noexcept {
+  const int n = msg->decode(data, 0, static_cast<int>(size));
+  if (n < 0 || n != static_cast<int>(size)) {  // wrong type, truncated or trailing bytes
     counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
     return false;
   }
@@ -212,7 +204,7 @@ bool GuidanceNode::admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) n
     return false;
   }
   std::int64_t gaps = 0;
-  SeqTracker& tracker = seq_[static_cast<std::size_t>(raw.channel)];
+  SeqTracker& tracker = seq_[static_cast<std::size_t>(channel)];
   const std::int64_t restarts = tracker.restarts();
   const Reason s = tracker.check(msg->seq, msg->utime, &gaps);
   if (s != Reason::kOk) {
@@ -220,12 +212,16 @@ bool GuidanceNode::admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) n
     return false;
   }
   // Gaps are numbers never received: the ones this node dropped from its own queue were.
-  std::int64_t& dropped = dropped_since_accept_[static_cast<std::size_t>(raw.channel)];
+  std::int64_t& dropped = dropped_since_accept_[static_cast<std::size_t>(channel)];
   counts_.seq_gaps += gaps > dropped ? gaps - dropped : 0;
   dropped = 0;
   counts_.seq_restarts += tracker.restarts() - restarts;
   return true;
 }
+
+// The arm command is admitted from the command inbox (node_commands.cpp).
+template bool GuidanceNode::admit<evade_arm_t>(int, const std::uint8_t*, std::uint32_t,
+                                               std::int64_t, evade_arm_t*) noexcept;
 
 void GuidanceNode::process_queue(std::int64_t now_us) noexcept {
   have_cand_.fill(false);
@@ -234,7 +230,7 @@ void GuidanceNode::process_queue(std::int64_t now_us) noexcept {
     switch (raw.channel) {
       case kInAngles: {
         evade_angles_t m{};
-        if (admit(raw, now_us, &m)) {
+        if (admit(raw.channel, raw.data.data(), raw.size, now_us, &m)) {
           if (have_cand_[kInAngles]) counts_.add(Verdict::kSuperseded);
           cand_angles_ = m;
           have_cand_[kInAngles] = true;
@@ -243,19 +239,10 @@ void GuidanceNode::process_queue(std::int64_t now_us) noexcept {
       }
       case kInNav: {
         evade_nav_state_t m{};
-        if (admit(raw, now_us, &m)) {
+        if (admit(raw.channel, raw.data.data(), raw.size, now_us, &m)) {
           if (have_cand_[kInNav]) counts_.add(Verdict::kSuperseded);
           cand_nav_ = m;
           have_cand_[kInNav] = true;
-        }
-        break;
-      }
-      case kInArm: {
-        evade_arm_t m{};
-        if (admit(raw, now_us, &m)) {
-          if (have_cand_[kInArm]) counts_.add(Verdict::kSuperseded);
-          cand_arm_ = m;
-          have_cand_[kInArm] = true;
         }
         break;
       }
@@ -279,16 +266,13 @@ void GuidanceNode::process_queue(std::int64_t now_us) noexcept {
     counts_.add(Verdict::kConsumed);
     from_lcm(cand_nav_, &input_.nav);
   }
-  if (have_cand_[kInArm]) {
-    counts_.add(Verdict::kConsumed);
-    armed_ = cand_arm_.armed;
-  }
   input_.armed = armed_;
 }
 
 const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept {
   process_queue(now_us);
-  process_plans(now_us);
+  process_commands(now_us);
+  input_.armed = armed_;
   // Watchdog (NODE-WD-1): the newest valid measurement received is older than the stale
   // limit. Its verdict is an input of the law, which then commands SAFE and counts it.
   const bool silent = have_angles_ && now_us - last_angles_utime_ > stale_us_;
@@ -302,27 +286,8 @@ const evade_thrust_cmd_t& GuidanceNode::run_cycle(std::int64_t now_us) noexcept 
   if (cmd_pub_.publish(cmd_msg_) != 0) ++publish_failures_;
   ++cycles_;
 
-  if (cycles_ % cfg_.status_divider == 0) {
-    to_lcm(law_.status(), &status_msg_);
-    status_msg_.utime = now_us;
-    status_msg_.seq = ++status_seq_;
-    status_msg_.armed = lcm_bool(armed_);
-    status_msg_.n_received = counts_.received;
-    status_msg_.n_consumed = counts_.consumed;
-    status_msg_.n_rejected = counts_.rejected;
-    status_msg_.n_stale = counts_.stale;
-    status_msg_.n_superseded = counts_.superseded;
-    status_msg_.n_dropped = counts_.dropped;
-    status_msg_.n_seq_gaps = counts_.seq_gaps;
-    status_msg_.cycles = cycles_;
-    status_msg_.watchdog_cycles = law_.status().watchdog_cycles;
-    status_msg_.overruns = compute_.overruns();
-    status_msg_.cycle_p50_us = compute_.quantile(0.50);
-    status_msg_.cycle_p99_us = compute_.quantile(0.99);
-    status_msg_.cycle_max_us = compute_.max_us();
-    to_lcm(plan_exec_.status(), &status_msg_);
-    if (status_pub_.publish(status_msg_) != 0) ++publish_failures_;
-  }
+  if (cycles_ % cfg_.status_divider == 0) fill_status(now_us);
+  verify_budget_left_ = cfg_.auth.max_verify_per_cycle;  // the next drain's budget
   return cmd_msg_;
 }
 

@@ -19,6 +19,19 @@ const Param<C> kRows[] = {
     EVADE_PARAM_INT(C, max_seq_jump, "-", 1, 1000000,
                     "largest plausible forward seq step; beyond it a sender restart must be "
                     "confirmed by the next message (NODE-IN-4)"),
+    EVADE_PARAM_BOOL(C, auth.plan_required,
+                     "EVADE_BURN_PLAN messages must be signed by an active command key (AUTH-2)"),
+    EVADE_PARAM_BOOL(C, auth.arm_required,
+                     "EVADE_ARM messages must be signed by an active command key (AUTH-2)"),
+    EVADE_PARAM_BOOL(C, auth.nav_required,
+                     "EVADE_NAV messages must be signed by a sensor key (AUTH-3)"),
+    EVADE_PARAM_BOOL(C, auth.angles_required,
+                     "EVADE_ANGLES messages must be signed by a sensor key (AUTH-3)"),
+    EVADE_PARAM_BOOL(C, auth.clock_required,
+                     "EVADE_SIM_CLOCK ticks must be signed by a sensor key (AUTH-3)"),
+    EVADE_PARAM_INT(C, auth.max_verify_per_cycle, "-", 1, 100000,
+                    "MAC verifications per cycle; messages past it are dropped and counted "
+                    "(verify_budget, AUTH-5)"),
 };
 
 }  // namespace

@@ -47,6 +47,11 @@ Reason validate(const evade_nav_state_t& m) noexcept {
 
 Reason validate(const evade_arm_t&) noexcept { return Reason::kOk; }
 
+Reason validate(const evade_key_cmd_t& m) noexcept {
+  const bool op_ok = m.op == evade_key_cmd_t::OP_ACTIVATE || m.op == evade_key_cmd_t::OP_RETIRE;
+  return op_ok && m.key_id > 0 ? Reason::kOk : Reason::kOutOfRange;
+}
+
 Reason validate(const evade_sim_clock_t& m) noexcept {
   return m.utime >= 0 && m.utime <= Limits::kMaxTickUtimeUs ? Reason::kOk : Reason::kOutOfRange;
 }
@@ -77,6 +82,16 @@ const char* reason_name(Reason r) noexcept {
     case Reason::kDuplicateSeq: return "duplicate_seq";
     case Reason::kOutOfOrderSeq: return "out_of_order_seq";
     case Reason::kSeqJump: return "seq_jump";
+    case Reason::kUnsigned: return "unsigned";
+    case Reason::kUnknownKey: return "unknown_key";
+    case Reason::kBadMac: return "bad_mac";
+    case Reason::kStandbyKey: return "standby_key";
+    case Reason::kRetiredKey: return "retired_key";
+    case Reason::kWrongKeyRole: return "wrong_key_role";
+    case Reason::kTooShortForTrailer: return "too_short_for_trailer";
+    case Reason::kReplayedArsn: return "replayed_arsn";
+    case Reason::kVerifyBudget: return "verify_budget";
+    case Reason::kNotPersisted: return "not_persisted";
     case Reason::kCount: break;
   }
   return "?";

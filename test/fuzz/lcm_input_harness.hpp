@@ -4,9 +4,10 @@
 // traffic, exactly as if received from the network: LCM callback -> bounded queue -> decode
 // -> validate -> seq/utime admission -> law -> command. A reference node receives only the
 // good traffic. Checked after every cycle (abort on violation):
-//   - NODE-IN-1: received == consumed + rejected + stale + superseded + dropped, and
-//     received == the number of input messages published;
-//   - NODE-OUT-2: while every fuzzed message so far was counted rejected, stale or dropped,
+//   - NODE-IN-1: received == consumed + rejected + stale + superseded + dropped + auth_failed
+//     + replayed, and received == the number of input messages published;
+//   - NODE-OUT-2: while every fuzzed message so far was counted rejected, stale, dropped,
+//     auth_failed or replayed,
 //     the node's command is bit-identical to the reference's (no thrust, and no change at
 //     all, from rejected data) and both consumed the same number of messages;
 //   - NODE-OUT-1 and the command's own limits, always: seq +1 per cycle, utime = cycle time,
@@ -15,8 +16,11 @@
 //
 // Input framing: up to kMaxRecords records, each [advance: 1 byte][size: 2 bytes LE]
 // [size bytes]. The low 3 bits of `advance` are the cycles to run before the record's bytes
-// are published (0: same cycle as the previous record); a short last record takes what is
-// left. Seeds are written by fuzz_make_seeds (test/fuzz/make_seeds.cpp).
+// are published (0: same cycle as the previous record); bit 3 set: the harness writes a valid
+// MAC under the node's test command key into the record's last 32 bytes before publishing it
+// (docs/SECURITY.md AUTH-1), so that mutated commands reach past the authentication into the
+// decoder and the ARSN check; clear: the bytes go as they are (the authentication failure
+// paths). A short last record takes what is left. Seeds are written by fuzz_make_seeds (test/fuzz/make_seeds.cpp).
 #pragma once
 
 #include <cmath>
@@ -25,6 +29,7 @@
 #include <cstring>
 
 #include "fuzz_check.hpp"
+#include "evade/auth/trailer.hpp"
 #include "guidance_lcm/node_harness.hpp"
 
 namespace evade::fuzz {
@@ -35,6 +40,7 @@ inline constexpr int kTailCycles = 3;    // after the last record (run_node_inpu
 
 struct Record {
   int cycle = 0;  // delivered just before this cycle runs
+  bool sign = false;
   const std::uint8_t* bytes = nullptr;
   std::uint32_t size = 0;
 };
@@ -46,6 +52,7 @@ inline int parse_records(const std::uint8_t* data, std::size_t size, Record* out
   std::size_t pos = 0;
   while (n < kMaxRecords && pos < size) {
     cycle += data[pos] & 0x7;
+    out[n].sign = (data[pos] & 0x8) != 0;
     ++pos;
     std::uint32_t len = 0;
     if (pos < size) len = data[pos];
@@ -75,7 +82,8 @@ inline lcm_t* process_lcm(int role) {
 /// next input starts from an empty LCM.
 struct FuzzRig {
   FuzzRig(int role, const guidance_lcm::NodeConfig& cfg)
-      : lcm(process_lcm(role)), node(lcm, cfg), pub(lcm) {}
+      : lcm(process_lcm(role)), node(lcm, cfg, nullptr, guidance_lcm::test::test_security()),
+        pub(lcm) {}
   ~FuzzRig() { flush(lcm); }
   static void flush(lcm_t* l) {
     for (int i = 0; i < 100000 && lcm_handle_timeout(l, 0) > 0; ++i) {
@@ -136,7 +144,20 @@ inline void check_command(const evade_thrust_cmd_t& c, std::int64_t t_us, std::i
 inline void check_accounting(const guidance_lcm::InputCounts& c, std::int64_t published) {
   EVADE_FUZZ_CHECK(c.received == published, "every published input message is received");
   EVADE_FUZZ_CHECK(c.accounted() == c.received,
-                   "received == consumed + rejected + stale + superseded + dropped");
+                   "received == consumed + rejected + stale + superseded + dropped + "
+                   "auth_failed + replayed");
+}
+
+/// Publishes a record's bytes, with a valid MAC when the record asks for one.
+inline void publish(FuzzRig& rig, const char* channel, const Record& r) {
+  static std::uint8_t buf[65536];
+  if (!r.sign || r.size < auth::kMinSignedBytes) {
+    rig.pub.send_bytes(channel, r.bytes, r.size);
+    return;
+  }
+  std::memcpy(buf, r.bytes, r.size);
+  (void)auth::sign_encoded(guidance_lcm::test::test_command_key().key, channel, buf, r.size);
+  rig.pub.send_bytes(channel, buf, r.size);  // size checked above: signing cannot fail
 }
 
 /// Runs the good traffic on a DUT and a reference node, the records on `channel` of the DUT
@@ -156,8 +177,7 @@ inline void run_node_input(const std::uint8_t* data, std::size_t size, const cha
     for (FuzzRig* r : {&dut, &ref}) r->send_good(t, k + 1, good == GoodTraffic::kNavAndAngles);
     const guidance_lcm::InputCounts before = dut.node.counts();
     int m = 0;
-    for (; next < n_rec && rec[next].cycle == k; ++next, ++m)
-      dut.pub.send_bytes(channel, rec[next].bytes, rec[next].size);
+    for (; next < n_rec && rec[next].cycle == k; ++next, ++m) publish(dut, channel, rec[next]);
     const evade_thrust_cmd_t c = dut.cycle(t);
     const evade_thrust_cmd_t r = ref.cycle(t);
     const guidance_lcm::InputCounts& after = dut.node.counts();
@@ -165,7 +185,9 @@ inline void run_node_input(const std::uint8_t* data, std::size_t size, const cha
     check_accounting(ref.node.counts(), ref.pub.published());
     check_command(c, t, k, dut.node);
     const std::int64_t not_used = (after.rejected - before.rejected) +
-                                  (after.stale - before.stale) + (after.dropped - before.dropped);
+                                  (after.stale - before.stale) + (after.dropped - before.dropped) +
+                                  (after.auth_failed - before.auth_failed) +
+                                  (after.replayed - before.replayed);
     if (not_used != m) tainted = true;  // some fuzzed message was accepted this cycle
     if (!tainted) {
       EVADE_FUZZ_CHECK(same_command(c, r),

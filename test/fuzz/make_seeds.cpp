@@ -15,6 +15,7 @@
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_arm_t.hpp"
 #include "evade/evade_burn_plan_t.hpp"
+#include "evade/evade_key_cmd_t.hpp"
 #include "evade/evade_nav_state_t.hpp"
 #include "evade/evade_sim_clock_t.hpp"
 #include "evade/guidance_lcm/burn_plan_convert.hpp"
@@ -38,6 +39,19 @@ Bytes encode(const Msg& m) {
   Bytes b(static_cast<std::size_t>(m.getEncodedSize()));
   m.encode(b.data(), 0, static_cast<int>(b.size()));
   return b;
+}
+
+// Commands (plans, arm) carry the test command key's id and a fresh ARSN; their records set
+// kSign, so that the harness puts a valid MAC on whatever bytes the fuzzer makes of them
+// (lcm_input_harness.hpp): the mutations reach past the authentication into the decoder.
+// A duplicated record duplicates the ARSN: a replay.
+constexpr int kSign = 0x08;
+std::int64_t g_arsn = 0;
+template <typename Msg>
+Bytes encode_cmd(Msg m) {
+  m.auth.key_id = evade::guidance_lcm::test::test_command_key().id;
+  m.auth.arsn = ++g_arsn;
+  return encode(m);
 }
 
 // One record: advance cycles, then the bytes.
@@ -150,19 +164,44 @@ void arm_seeds(const std::filesystem::path& d) {
   m.utime = t_of(6);
   m.seq = 1;
   m.armed = false;
-  record(&b, 2, encode(m));
+  record(&b, 2 | kSign, encode_cmd(m));
   m.utime = t_of(12);
   m.seq = 2;
   m.armed = true;
-  record(&b, 6, encode(m));
+  record(&b, 6 | kSign, encode_cmd(m));
   write(d, "disarm-then-arm", b);
   b.clear();
   m.utime = t_of(6);
   m.seq = 1;
   m.armed = false;
-  record(&b, 2, encode(m));
-  record(&b, 1, encode(m));  // duplicate
-  write(d, "disarm-duplicate", b);
+  const Bytes once = encode_cmd(m);
+  record(&b, 2 | kSign, once);
+  record(&b, 1 | kSign, once);  // the same bytes again: a replayed ARSN
+  write(d, "disarm-replayed", b);
+  b.clear();
+  record(&b, 2, encode_cmd(m));  // not re-signed: its zero MAC is refused (bad_mac)
+  write(d, "disarm-bad-mac", b);
+}
+
+void key_cmd_seeds(const std::filesystem::path& d) {
+  Bytes b;
+  evade::evade_key_cmd_t m{};
+  m.utime = t_of(6);
+  m.seq = 1;
+  m.op = evade::evade_key_cmd_t::OP_ACTIVATE;
+  m.key_id = 1;
+  record(&b, 2 | kSign, encode_cmd(m));
+  m.seq = 2;
+  m.op = evade::evade_key_cmd_t::OP_RETIRE;  // the only command key: refused (last key)
+  record(&b, 1 | kSign, encode_cmd(m));
+  m.seq = 3;
+  m.key_id = 2;  // the sensor key: not a command key
+  record(&b, 1 | kSign, encode_cmd(m));
+  write(d, "activate-retire", b);
+  b.clear();
+  m.op = 7;  // unknown op
+  record(&b, 2 | kSign, encode_cmd(m));
+  write(d, "bad-op", b);
 }
 
 evade_burn_plan_t plan_msg(int cycle, std::int64_t id, int n, double dv_mps,
@@ -185,22 +224,22 @@ evade_burn_plan_t plan_msg(int cycle, std::int64_t id, int n, double dv_mps,
 void burn_plan_seeds(const std::filesystem::path& d) {
   using evade::guidance::PlanFrame;
   Bytes b;
-  record(&b, 2, encode(plan_msg(6, 1, 2, 0.05, PlanFrame::kRsw)));
+  record(&b, 2 | kSign, encode_cmd(plan_msg(6, 1, 2, 0.05, PlanFrame::kRsw)));
   write(d, "two-impulses-rsw", b);
   b.clear();
-  record(&b, 2, encode(plan_msg(6, 1, 1, 0.1, PlanFrame::kEci)));
-  record(&b, 1, encode(plan_msg(7, 1, 1, 0.1, PlanFrame::kEci)));  // not newer
-  record(&b, 1, encode(plan_msg(8, 2, 3, 0.02, PlanFrame::kEci)));  // supersedes
+  record(&b, 2 | kSign, encode_cmd(plan_msg(6, 1, 1, 0.1, PlanFrame::kEci)));
+  record(&b, 1 | kSign, encode_cmd(plan_msg(7, 1, 1, 0.1, PlanFrame::kEci)));  // not newer
+  record(&b, 1 | kSign, encode_cmd(plan_msg(8, 2, 3, 0.02, PlanFrame::kEci)));  // supersedes
   write(d, "eci-not-newer-superseded", b);
   b.clear();
   evade_burn_plan_t m = plan_msg(6, 1, 2, 0.05, PlanFrame::kRsw);
   m.impulse_t_s[1] = m.impulse_t_s[0];  // not ordered
-  record(&b, 2, encode(m));
+  record(&b, 2 | kSign, encode_cmd(m));
   m = plan_msg(7, 2, 1, 500.0, PlanFrame::kRsw);  // over budget
-  record(&b, 1, encode(m));
+  record(&b, 1 | kSign, encode_cmd(m));
   m = plan_msg(8, 3, 1, 0.05, PlanFrame::kRsw);
   m.impulse_t_s[0] = -1.0;  // in the past
-  record(&b, 1, encode(m));
+  record(&b, 1 | kSign, encode_cmd(m));
   write(d, "rejections", b);
 }
 
@@ -276,6 +315,7 @@ int main(int argc, char** argv) {
   nav_seeds(root / "lcm_nav");
   arm_seeds(root / "lcm_arm");
   burn_plan_seeds(root / "lcm_burn_plan");
+  key_cmd_seeds(root / "lcm_key_cmd");
   sim_clock_seeds(root / "lcm_sim_clock");
   plan_validation_seeds(root / "plan_validation");
   std::printf("seeds written under %s\n", root.string().c_str());

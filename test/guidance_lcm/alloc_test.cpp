@@ -12,6 +12,12 @@
 #include <new>
 #include <vector>
 
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+
+#include "evade/evade_burn_plan_t.hpp"
 #include "node_harness.hpp"
 
 namespace {
@@ -101,6 +107,53 @@ TEST(NodeAllocation, TenThousandCyclesAllocateNothing) {
   EXPECT_EQ(rig.node.counts().accounted(), rig.pub.published());
   EXPECT_GT(rig.node.counts().rejected, 0);
   EXPECT_GT(thrusting, 0) << "the cycles exercised the evading path";
+}
+
+// NODE-RT-1 with authentication (docs/SECURITY.md AUTH-6): every sensor message signed and
+// verified, signed plans, key commands, replays and forgeries now and then, and the
+// persisted state written between cycles (into a scratch file): still no allocation.
+TEST(NodeAllocation, AuthenticatedCyclesAndTheStateWriteAllocateNothing) {
+  constexpr int kCycles = 5000;
+  char dir_tmpl[] = "/tmp/evade-alloc-XXXXXX";
+  ASSERT_NE(mkdtemp(dir_tmpl), nullptr);
+  const std::string state = std::string(dir_tmpl) + "/state";
+  NodeConfig cfg;
+  cfg.auth.nav_required = cfg.auth.angles_required = true;
+  NodeSecurity sec = test_security();
+  sec.state_path = state;
+  Rig rig(cfg, kCycles + 100, sec);
+  std::int64_t t = 1000000;
+  std::int64_t seq = 1;
+  for (int k = 0; k < 20; ++k, t += kPeriodUs) rig.good_cycle(t, seq++);  // warm-up
+  evade_burn_plan_t plan{};
+  plan.n_impulses = 1;
+  plan.impulse_dv_rsw_mps[0][1] = 0.01;
+  g_news = 0;
+  g_counting = true;
+  for (int k = 0; k < kCycles; ++k, t += kPeriodUs) {
+    if (k % 100 == 3) {  // a signed plan (rejected or accepted: the path is what counts)
+      plan.utime = plan.epoch_utime = t;
+      plan.seq = k;
+      plan.impulse_t_s[0] = 0.5;
+      rig.pub.send(kChanPlan, plan);
+    }
+    if (k % 100 == 5) {  // a forged one: signing off
+      rig.pub.set_signing(false);
+      rig.pub.send(kChanPlan, plan);
+      rig.pub.send(kChanNav, plan);  // wrong type, unsigned, on a sensor channel
+      rig.pub.set_signing(true);
+    }
+    rig.good_cycle(t, seq++);
+    EXPECT_EQ(rig.node.persist_auth_state(), 0);
+  }
+  g_counting = false;
+  EXPECT_EQ(g_news.load(), 0) << "operator new called in the authenticated node cycle";
+  EXPECT_EQ(rig.node.counts().accounted(), rig.pub.published());
+  EXPECT_GT(rig.node.counts().auth_failed, 0);
+  EXPECT_GT(rig.node.counts().consumed, 2 * kCycles) << "signed sensor messages were used";
+  EXPECT_GT(rig.node.plan_executor().status().accepted, 0);
+  (void)std::remove(state.c_str());
+  (void)rmdir(dir_tmpl);
 }
 
 }  // namespace

@@ -429,9 +429,10 @@ TEST(NodeFaults, MessageWithTrailingBytesIsRejected) {
   EXPECT_EQ(rig.node.counts().by_reason[static_cast<int>(Reason::kDecodeFailed)], 1);
 }
 
-// NODE-IN-3 on the arm channel: of two arm messages in one cycle the newer decides and the
-// older is superseded, whichever way they point.
-TEST(NodeFaults, NewestArmMessageOfACycleDecidesTheOlderIsSuperseded) {
+// NODE-IN-3 on the arm channel: arm/disarm commands take effect in arrival order, each one
+// counted consumed (a command is never superseded: docs/SECURITY.md AUTH-5), so of two in one
+// cycle the later decides, whichever way they point.
+TEST(NodeFaults, ArmCommandsOfACycleTakeEffectInOrderTheLaterDecides) {
   Rig rig;
   std::int64_t t = 1000000;
   std::int64_t seq = 1;
@@ -445,9 +446,11 @@ TEST(NodeFaults, NewestArmMessageOfACycleDecidesTheOlderIsSuperseded) {
   arm.seq = 2;
   arm.armed = false;
   rig.pub.send(kChanArm, arm);
+  std::int64_t consumed = rig.node.counts().consumed;
   EXPECT_EQ(rig.good_cycle(t, seq++).accel_mps2, 0.0);
   EXPECT_FALSE(rig.node.armed());
-  EXPECT_EQ(rig.node.counts().superseded, 1);
+  EXPECT_EQ(rig.node.counts().consumed - consumed, 4);  // two arms, nav and angles
+  EXPECT_EQ(rig.node.counts().superseded, 0);
   t += kPeriodUs;
   arm.utime = t;
   arm.seq = 3;
@@ -456,9 +459,11 @@ TEST(NodeFaults, NewestArmMessageOfACycleDecidesTheOlderIsSuperseded) {
   arm.seq = 4;
   arm.armed = true;
   rig.pub.send(kChanArm, arm);
+  consumed = rig.node.counts().consumed;
   rig.good_cycle(t, seq++);
   EXPECT_TRUE(rig.node.armed());
-  EXPECT_EQ(rig.node.counts().superseded, 2);
+  EXPECT_EQ(rig.node.counts().consumed - consumed, 4);
+  EXPECT_EQ(rig.node.counts().superseded, 0);
   expect_accounted(rig.node, rig.pub.published());
 }
 

@@ -2,11 +2,16 @@
 // the law evade (so a wrongly used bad message would show as thrust or a changed command),
 // and a command recorder. Everything the hot loop touches is preallocated here so the
 // allocation test can use the same code.
+// The rig's node holds a test command key (id 1) and a test sensor key (id 2), and its
+// publisher signs what it sends like the genuine ground and sensors do (docs/SECURITY.md):
+// commands with key 1, sensor messages with key 2, ARSNs from a counter. An attacker is a
+// second publisher with signing off, a wrong key, or hand-made bytes.
 #pragma once
 
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include <lcm/lcm.h>
@@ -14,6 +19,7 @@
 #include "evade/guidance/los_geometry.hpp"
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/signed_encode.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
 namespace evade::guidance_lcm::test {
@@ -51,16 +57,63 @@ struct Encounter {
 
 inline constexpr std::int64_t kPeriodUs = 20000;  // 50 Hz
 
-/// Publishes raw bytes on a channel (encode into a fixed buffer: no allocation).
+/// The rig's keys: a command key (the ground's) and a sensor key (the simulator's).
+inline SigningKey test_key(std::int32_t id, std::uint8_t fill) {
+  SigningKey k;
+  k.id = id;
+  for (std::size_t i = 0; i < k.key.size(); ++i) k.key[i] = static_cast<std::uint8_t>(fill + i);
+  return k;
+}
+inline SigningKey test_command_key() { return test_key(1, 0x11); }
+inline SigningKey test_sensor_key() { return test_key(2, 0x5a); }
+
+/// The node's side: both keys loaded and active, memory-only state.
+inline NodeSecurity test_security() {
+  NodeSecurity sec;
+  const SigningKey c = test_command_key();
+  const SigningKey s = test_sensor_key();
+  (void)sec.keys.add(c.id, auth::KeyRole::kCommand, c.key, auth::KeyState::kActive);
+  (void)sec.keys.add(s.id, auth::KeyRole::kSensor, s.key, auth::KeyState::kActive);
+  return sec;
+}
+
+template <class T, class = void>
+struct HasAuth : std::false_type {};
+template <class T>
+struct HasAuth<T, std::void_t<decltype(std::declval<T&>().auth)>> : std::true_type {};
+
+inline bool is_command_channel(const char* channel) {
+  return std::strcmp(channel, kChanPlan) == 0 || std::strcmp(channel, kChanArm) == 0 ||
+         std::strcmp(channel, kChanKeyCmd) == 0;
+}
+
+/// Publishes on a channel (encode into a fixed buffer: no allocation). Signs every message
+/// that has a security trailer (command channels with the command key, others with the sensor
+/// key, ARSN +1 per message) unless signing is off.
 class Publisher {
  public:
   explicit Publisher(lcm_t* lcm) : lcm_(lcm) {}
   template <typename Msg>
   void send(const char* channel, const Msg& m) {
-    const int n = m.encode(buf_, 0, static_cast<int>(sizeof(buf_)));
+    Msg c = m;
+    int n = 0;
+    if constexpr (HasAuth<Msg>::value) {
+      if (signing_) {
+        const SigningKey& k = is_command_channel(channel) ? command_key_ : sensor_key_;
+        n = encode_signed(&c, channel, k, ++arsn_, buf_, static_cast<int>(sizeof(buf_)));
+      } else {
+        n = c.encode(buf_, 0, static_cast<int>(sizeof(buf_)));
+      }
+    } else {
+      n = c.encode(buf_, 0, static_cast<int>(sizeof(buf_)));
+    }
     lcm_publish(lcm_, channel, buf_, static_cast<unsigned>(n));
     ++published_;
   }
+  void set_signing(bool on) { signing_ = on; }
+  void set_command_key(const SigningKey& k) { command_key_ = k; }
+  void set_arsn(std::int64_t next) { arsn_ = next - 1; }
+  std::int64_t arsn() const { return arsn_; }
   void send_bytes(const char* channel, const void* data, unsigned size) {
     lcm_publish(lcm_, channel, data, size);
     ++published_;
@@ -71,6 +124,10 @@ class Publisher {
   lcm_t* lcm_;
   std::uint8_t buf_[1024];
   std::int64_t published_ = 0;
+  bool signing_ = true;
+  std::int64_t arsn_ = 0;
+  SigningKey command_key_ = test_command_key();
+  SigningKey sensor_key_ = test_sensor_key();
 };
 
 /// Records every command the node publishes (subscribed on the same memq instance).
@@ -107,8 +164,10 @@ using LcmPtr = std::unique_ptr<lcm_t, LcmDeleter>;
 
 /// memq:// node + publisher + recorder.
 struct Rig {
-  explicit Rig(NodeConfig cfg = {}, std::size_t max_cmds = 100000)
-      : lcm(lcm_create("memq://")), node(lcm.get(), cfg), pub(lcm.get()), rec(lcm.get(), max_cmds) {}
+  explicit Rig(NodeConfig cfg = {}, std::size_t max_cmds = 100000,
+               const NodeSecurity& sec = test_security())
+      : lcm(lcm_create("memq://")), node(lcm.get(), cfg, nullptr, sec), pub(lcm.get()),
+        rec(lcm.get(), max_cmds) {}
 
   /// Sends good nav + angles stamped t_us and seq, drains, runs the cycle at t_us.
   const evade_thrust_cmd_t& good_cycle(std::int64_t t_us, std::int64_t seq) {

@@ -172,7 +172,7 @@ TEST(PlanEndToEnd, Seed3FormationPlanFlownByTheNodeInTheSimulatorOver30Hours) {
   const double cycle_s = ncfg.guidance.cycle_s();
   const auto uplink = [&](long k, std::int64_t utime) {
     if (k != 0) return;
-    lcm_link::PlanStamp stamp;
+    lcm_link::PlanStamp stamp = test::signed_stamp();
     stamp.utime = utime;
     stamp.epoch_utime = sim::kPlanRunUtime0;  // plan t = 0 is the scenario epoch = run start
     lcm_link::publish_burn_plan(ep.lcm(), guidance_lcm::kChanPlan, s.plan, 1, stamp);

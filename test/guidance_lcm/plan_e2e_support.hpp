@@ -13,16 +13,21 @@
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/convert.hpp"
 #include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/lcm_link/burn_plan_publisher.hpp"
 #include "evade/sim/guidance_endpoint.hpp"
+#include "guidance_lcm/node_harness.hpp"
 
 namespace evade::test {
 
 // The node on memq:// behind the simulator's endpoint interface: nav in as evade_nav_state_t,
-// one run_cycle per exchange (lockstep at the simulator's utime), command out decoded.
+// one run_cycle per exchange (lockstep at the simulator's utime), command out decoded. The
+// node holds the test keys (node_harness.hpp): plans are published signed with
+// signed_stamp(), as the ground signs them (docs/SECURITY.md).
 class NodeEndpoint final : public sim::GuidanceEndpoint {
  public:
   explicit NodeEndpoint(const guidance_lcm::NodeConfig& cfg)
-      : lcm_(lcm_create("memq://"), &lcm_destroy), node_(lcm_.get(), cfg) {}
+      : lcm_(lcm_create("memq://"), &lcm_destroy),
+        node_(lcm_.get(), cfg, nullptr, guidance_lcm::test::test_security()) {}
   guidance::ThrustCommand exchange(std::int64_t utime, const guidance::NavState& nav,
                                    const guidance::AnglesMeasurement*) override {
     evade_nav_state_t m{};
@@ -43,6 +48,13 @@ class NodeEndpoint final : public sim::GuidanceEndpoint {
   guidance_lcm::GuidanceNode node_;
   std::int64_t seq_ = 0;
 };
+
+// The stamp of a plan signed with the test command key.
+inline lcm_link::PlanStamp signed_stamp() {
+  lcm_link::PlanStamp s;
+  s.key = guidance_lcm::test::test_command_key();
+  return s;
+}
 
 // HCW A (RSW): ẍ = 3n²x + 2nẏ, ÿ = −2nẋ, z̈ = −n²z.
 inline Mat6 hcw_a(double n) {

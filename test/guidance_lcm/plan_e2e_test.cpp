@@ -64,7 +64,7 @@ TEST(PlanEndToEnd, Seed4ObservabilityPlanFlownByTheNodeInTheSimulator) {
   const std::int64_t epoch_us = sim::kPlanRunUtime0 + static_cast<std::int64_t>(kLeadS * 1e6);
   const auto uplink = [&](long k, std::int64_t utime) {
     if (k != 0) return;
-    lcm_link::PlanStamp stamp;
+    lcm_link::PlanStamp stamp = test::signed_stamp();
     stamp.utime = utime;
     stamp.epoch_utime = epoch_us;  // plan t = 0 (paper 004 burns at t0) is 10 s after start
     lcm_link::publish_burn_plan(ep.lcm(), guidance_lcm::kChanPlan, plan, 1, stamp);

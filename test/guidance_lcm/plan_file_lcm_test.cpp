@@ -59,7 +59,7 @@ TEST(PlanFileRun, PlanFileFlownInProcessDeliversTheSameDvAsThePlanFlownByTheNode
   test::NodeEndpoint node(ncfg);
   const auto uplink = [&](long k, std::int64_t utime) {
     if (k != 0) return;
-    lcm_link::PlanStamp stamp;
+    lcm_link::PlanStamp stamp = test::signed_stamp();
     stamp.utime = utime;
     stamp.epoch_utime = sim::kPlanRunUtime0;
     lcm_link::publish_burn_plan(node.lcm(), guidance_lcm::kChanPlan, plan, plan.plan_id, stamp);

@@ -87,14 +87,18 @@ struct RejectCase {
 };
 
 // PLAN-IN-1: bytes on EVADE_BURN_PLAN that are too large, not a plan, or a plan with
-// trailing bytes are rejected with their reason, counted, and never start a burn.
+// trailing bytes are rejected with their reason, counted, and never start a burn. The
+// decoder's own checks, with the plan channel's authentication off (node.auth.plan_required =
+// false); with it on the same bytes never reach the decoder (auth_node_test.cpp).
 TEST(NodePlan, OversizedAndUndecodablePlanBytesAreRejectedAndAccounted) {
-  Rig rig;
-  const std::vector<std::uint8_t> big(kMaxPlanBytes + 1, 0x5a);
+  NodeConfig cfg;
+  cfg.auth.plan_required = false;
+  Rig rig(cfg);
+  const std::vector<std::uint8_t> big(kMaxCommandBytes + 1, 0x5a);
   rig.pub.send_bytes(kChanPlan, big.data(), static_cast<unsigned>(big.size()));
   const std::uint8_t junk[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
   rig.pub.send_bytes(kChanPlan, junk, sizeof(junk));
-  std::uint8_t buf[kMaxPlanBytes] = {};
+  std::uint8_t buf[kMaxCommandBytes] = {};
   const evade_burn_plan_t good = plan_msg(1);
   const int n = good.encode(buf, 0, static_cast<int>(sizeof(buf)));
   ASSERT_GT(n, 0);
@@ -164,17 +168,17 @@ TEST(NodePlan, PlanStampedInTheFutureIsRejectedAndNeverFlown) {
   expect_accounted(edge);
 }
 
-// PLAN-IN-1: more plans in one cycle than the inbox holds (kPlanSlots): the oldest is
+// PLAN-IN-1: more plans in one cycle than the inbox holds (kCommandSlots): the oldest is
 // dropped and counted, the others are admitted in order and the newest is the one flown.
 TEST(NodePlan, PlansBeyondTheInboxInOneCycleDropTheOldest) {
   Rig rig;
-  for (std::int64_t id = 1; id <= static_cast<std::int64_t>(kPlanSlots) + 1; ++id)
+  for (std::int64_t id = 1; id <= static_cast<std::int64_t>(kCommandSlots) + 1; ++id)
     rig.pub.send(kChanPlan, plan_msg(id));
   nav_cycle(rig, 0);
   const InputCounts& c = rig.node.counts();
   EXPECT_EQ(c.dropped, 1);
-  EXPECT_EQ(rig.node.last_status().plan_n_accepted, static_cast<std::int64_t>(kPlanSlots));
-  EXPECT_EQ(rig.node.last_status().plan_id, static_cast<std::int64_t>(kPlanSlots) + 1);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, static_cast<std::int64_t>(kCommandSlots));
+  EXPECT_EQ(rig.node.last_status().plan_id, static_cast<std::int64_t>(kCommandSlots) + 1);
   expect_accounted(rig);
 }
 
@@ -233,13 +237,13 @@ TEST(NodePlan, EachRejectionReasonIsCountedInTheStatus) {
   nav_cycle(rig, 22);
   EXPECT_EQ(rig.node.last_status().plan_n_rejected[S::PLAN_REJECT_DISARMED], 1);
   EXPECT_EQ(rig.node.last_status().plan_n_accepted, 1);
-  // Bytes that are not a plan: an input rejected at decode.
+  // Bytes that are not a plan: refused by the authentication (too short for a trailer).
   const std::uint8_t junk[40] = {1, 2, 3};
   rig.pub.send_bytes(kChanPlan, junk, sizeof junk);
-  const auto decode_before = rig.node.counts().by_reason[static_cast<int>(Reason::kDecodeFailed)];
+  const auto short_before = rig.node.counts().by_reason[static_cast<int>(Reason::kTooShortForTrailer)];
   nav_cycle(rig, 23);
-  EXPECT_EQ(rig.node.counts().by_reason[static_cast<int>(Reason::kDecodeFailed)],
-            decode_before + 1);
+  EXPECT_EQ(rig.node.counts().by_reason[static_cast<int>(Reason::kTooShortForTrailer)],
+            short_before + 1);
   expect_accounted(rig);
 }
 

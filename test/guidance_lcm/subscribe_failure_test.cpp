@@ -156,9 +156,11 @@ TEST_F(NodeSubscriptions, NodeSubscribesItsChannelsAndUnsubscribesAllWhenDestroy
       NodeConfig cfg;
       cfg.lockstep = lockstep;
       GuidanceNode node(lcm_.get(), cfg);
-      std::vector<std::string> expected = {kChanAngles, kChanNav, kChanArm};
+      std::vector<std::string> expected = {kChanAngles, kChanNav};
       if (lockstep) expected.emplace_back(kChanClock);
       expected.emplace_back(kChanPlan);
+      expected.emplace_back(kChanArm);
+      expected.emplace_back(kChanKeyCmd);
       EXPECT_EQ(g_subscribed_channels, expected);
       EXPECT_EQ(g_live.size(), expected.size());
     }

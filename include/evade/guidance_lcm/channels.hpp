@@ -9,6 +9,7 @@ inline constexpr const char* kChanNav = "EVADE_NAV";              ///< evade_nav
 inline constexpr const char* kChanArm = "EVADE_ARM";              ///< evade_arm_t, in
 inline constexpr const char* kChanPlan = "EVADE_BURN_PLAN";   ///< evade_burn_plan_t, in
 inline constexpr const char* kChanClock = "EVADE_SIM_CLOCK";      ///< evade_sim_clock_t, in
+inline constexpr const char* kChanKeyCmd = "EVADE_KEY_CMD";       ///< evade_key_cmd_t, in
 inline constexpr const char* kChanCmd = "EVADE_THRUST_CMD";       ///< evade_thrust_cmd_t, out
 inline constexpr const char* kChanStatus = "EVADE_GUID_STATUS";   ///< evade_guidance_status_t, out
 

@@ -8,6 +8,19 @@
 
 namespace evade::guidance_lcm {
 
+/// Which input channels must carry a valid security trailer (docs/SECURITY.md AUTH-2):
+/// commands by default, sensors off (on a spacecraft they come over a trusted onboard bus; on a
+/// shared HIL network set them required and sign them in the simulator). Key commands
+/// (evade_key_cmd_t) are always required: there is no parameter to turn that off.
+struct AuthPolicy {
+  bool plan_required = true;
+  bool arm_required = true;
+  bool nav_required = false;
+  bool angles_required = false;
+  bool clock_required = false;
+  int max_verify_per_cycle = 512;
+};
+
 /// Defaults here; unit, range and meaning in node_params.hpp. The staleness limit (edge,
 /// law and watchdog) is the law's guidance.stale_limit_s: one knob.
 struct NodeConfig {
@@ -19,6 +32,7 @@ struct NodeConfig {
   int max_seq_jump = 1000;
   int recv_buf_bytes = 8 * 1024 * 1024;  ///< udpm kernel receive buffer requested (NODE-IN-6)
   bool lockstep = false; ///< subscribe to the sim clock
+  AuthPolicy auth;
 
   /// Empty when valid, else the parameter tables' error text (node.*, then guidance.*).
   std::string validate() const;

@@ -7,6 +7,7 @@
 
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_arm_t.hpp"
+#include "evade/evade_key_cmd_t.hpp"
 #include "evade/evade_nav_state_t.hpp"
 #include "evade/evade_sim_clock_t.hpp"
 #include "evade/evade_thrust_cmd_t.hpp"
@@ -31,6 +32,8 @@ struct Limits {
 Reason validate(const evade_angles_t& m) noexcept;
 Reason validate(const evade_nav_state_t& m) noexcept;
 Reason validate(const evade_arm_t& m) noexcept;
+/// A key command: op OP_ACTIVATE or OP_RETIRE and a key id > 0.
+Reason validate(const evade_key_cmd_t& m) noexcept;
 Reason validate(const evade_sim_clock_t& m) noexcept;
 /// A command: mode in range, accel finite and >= 0, |u| = 1 when accel > 0 (u = 0 allowed
 /// with accel = 0). Used by the simulator side of the link.

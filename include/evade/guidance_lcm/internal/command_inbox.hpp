@@ -1,9 +1,11 @@
-// Internal (not installed): bounded inbox of raw evade_burn_plan_t messages for the guidance
-// node (docs/GUIDANCE_NODE.md PLAN-IN-1). A plan (about 600 B encoded) does not fit the
-// input queue's 256-byte slots, and plans are rare, so they get their own fixed inbox of
-// kPlanSlots slots of kMaxPlanBytes: the receive callback copies bytes in, the cycle takes
-// them out in arrival order. When full the OLDEST plan is discarded (the caller counts it as
-// dropped). No allocation.
+// Internal (not installed): bounded inbox of raw command messages for the guidance node:
+// burn plans (evade_burn_plan_t), arm/disarm (evade_arm_t) and key commands (evade_key_cmd_t)
+// (docs/GUIDANCE_NODE.md PLAN-IN-1, docs/SECURITY.md AUTH-5). A plan (about 650 B encoded)
+// does not fit the input queue's 256-byte slots, and commands are rare, so they get their own
+// fixed inbox of kCommandSlots slots of kMaxCommandBytes: the receive callback copies in the
+// bytes of a command that passed authentication, the cycle takes them out in arrival order
+// once the anti-replay state they advanced is on disk (their persist epoch). When full the
+// OLDEST command is discarded (the caller counts it as dropped). No allocation.
 #pragma once
 
 #include <array>
@@ -13,26 +15,30 @@
 
 namespace evade::guidance_lcm {
 
-inline constexpr std::size_t kMaxPlanBytes = 1024;  ///< larger than any evade_burn_plan_t
-inline constexpr std::size_t kPlanSlots = 4;
+inline constexpr std::size_t kMaxCommandBytes = 1024;  ///< larger than any command type
+inline constexpr std::size_t kCommandSlots = 8;
 
-class PlanInbox {
+class CommandInbox {
  public:
   struct Slot {
+    int channel = 0;                ///< CommandChannel of the node
+    std::uint64_t epoch = 0;        ///< persist epoch it waits for (0: none)
     std::uint32_t size = 0;
-    std::array<std::uint8_t, kMaxPlanBytes> data{};
+    std::array<std::uint8_t, kMaxCommandBytes> data{};
   };
 
   bool empty() const noexcept { return size_ == 0; }
-  /// Copies a message in (size <= kMaxPlanBytes). Returns false if the oldest had to go.
-  bool push(const void* bytes, std::uint32_t size) noexcept {
+  /// Copies a message in (size <= kMaxCommandBytes). Returns false if the oldest had to go.
+  bool push(int channel, std::uint64_t epoch, const void* bytes, std::uint32_t size) noexcept {
     bool kept_all = true;
-    if (size_ == kPlanSlots) {
-      head_ = (head_ + 1) % kPlanSlots;
+    if (size_ == kCommandSlots) {
+      head_ = (head_ + 1) % kCommandSlots;
       --size_;
       kept_all = false;
     }
-    Slot& s = slots_[(head_ + size_) % kPlanSlots];
+    Slot& s = slots_[(head_ + size_) % kCommandSlots];
+    s.channel = channel;
+    s.epoch = epoch;
     s.size = size;
     std::memcpy(s.data.data(), bytes, size);
     ++size_;
@@ -40,12 +46,12 @@ class PlanInbox {
   }
   const Slot& front() const noexcept { return slots_[head_]; }
   void pop() noexcept {
-    head_ = (head_ + 1) % kPlanSlots;
+    head_ = (head_ + 1) % kCommandSlots;
     --size_;
   }
 
  private:
-  std::array<Slot, kPlanSlots> slots_{};
+  std::array<Slot, kCommandSlots> slots_{};
   std::size_t head_ = 0;
   std::size_t size_ = 0;
 };

@@ -5,7 +5,13 @@
 // directly over memq://. Requirements: docs/GUIDANCE_NODE.md (NODE-IN-*, NODE-OUT-*,
 // NODE-WD-*, NODE-RT-*).
 //
-// Cycle shape (STYLE.md §2): drain LCM into the bounded queue (receive callback copies raw
+// Authentication (docs/SECURITY.md AUTH-*): the receive callbacks check the security trailer
+// of every channel the policy requires (MAC first, then key state and role, then the ARSN)
+// within a per-cycle verification budget, and only then copy the bytes in. Commands (plans,
+// arm/disarm, key commands) go to the command inbox and take effect only once the anti-replay
+// state they advanced is on disk (persist_auth_state(), called by the loop between cycles).
+//
+// Cycle shape: drain LCM into the bounded queue (receive callback copies raw
 // bytes only) → decode + validate + seq/utime checks, newest valid message per channel is
 // the candidate (older ones superseded) → watchdog verdict (an input of the law) → step the
 // law → encode into a preallocated buffer → publish command (seq +1) → status every
@@ -21,8 +27,11 @@
 
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_arm_t.hpp"
+#include "evade/auth/keyring.hpp"
+#include "evade/auth/state_file.hpp"
 #include "evade/evade_burn_plan_t.hpp"
 #include "evade/evade_guidance_status_t.hpp"
+#include "evade/evade_key_cmd_t.hpp"
 #include "evade/evade_nav_state_t.hpp"
 #include "evade/evade_sim_clock_t.hpp"
 #include "evade/evade_thrust_cmd_t.hpp"
@@ -31,14 +40,17 @@
 #include "evade/guidance_lcm/internal/cycle_stats.hpp"
 #include "evade/guidance_lcm/input_accounting.hpp"
 #include "evade/guidance_lcm/node_config.hpp"
+#include "evade/guidance_lcm/node_security.hpp"
 #include "evade/guidance_lcm/internal/input_queue.hpp"
-#include "evade/guidance_lcm/internal/plan_inbox.hpp"
+#include "evade/guidance_lcm/internal/command_inbox.hpp"
 #include "evade/guidance_lcm/internal/raw_publisher.hpp"
 #include "evade/guidance_lcm/internal/seq_tracker.hpp"
 
 namespace evade::guidance_lcm {
 
 enum InputChannel : int { kInAngles = 0, kInNav = 1, kInArm = 2, kInCount = 3 };
+/// Channels of the command inbox.
+enum CommandChannel : int { kCmdPlan = 0, kCmdArm = 1, kCmdKey = 2, kCmdCount = 3 };
 
 class GuidanceNode {
  public:
@@ -46,7 +58,10 @@ class GuidanceNode {
   /// given (e.g. a file:// log in write mode during replay), else on lcm. Throws
   /// std::invalid_argument on a bad config or a null lcm, std::runtime_error naming the
   /// channel if LCM refuses a subscription (after undoing the subscriptions already made).
-  GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm = nullptr);
+  /// sec holds the keys (none: every message on a channel that must be signed is refused)
+  /// and the persisted state, which is loaded here (std::runtime_error if it is malformed).
+  GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm = nullptr,
+               const NodeSecurity& sec = NodeSecurity{});
   ~GuidanceNode();
   GuidanceNode(const GuidanceNode&) = delete;
   GuidanceNode& operator=(const GuidanceNode&) = delete;
@@ -59,6 +74,12 @@ class GuidanceNode {
   int wait_for_tick(int timeout_ms, std::int64_t* tick_utime) noexcept;
   /// One guidance cycle at now_us. Publishes exactly one command; returns it.
   const evade_thrust_cmd_t& run_cycle(std::int64_t now_us) noexcept;
+
+  /// Writes the authentication state if a command advanced it (blocking: the loop calls it
+  /// between cycles, never inside one). Commands waiting on it take effect in the next cycle.
+  /// Returns 0 (written or nothing to write) or -errno; a failure is counted, and the commands
+  /// waiting on it are refused in the next cycle (not_persisted).
+  int persist_auth_state() noexcept;
 
   /// Timing figures from the loop (they go out in the status message).
   void record_compute_time(double us) noexcept { compute_.add(us); }
@@ -82,6 +103,8 @@ class GuidanceNode {
   bool armed() const noexcept { return armed_; }
   /// The uplinked burn plan's executor (docs/GUIDANCE_NODE.md PLAN-*).
   const guidance::PlanExecutor& plan_executor() const noexcept { return plan_exec_; }
+  const auth::KeyRing& keys() const noexcept { return keys_; }
+  std::int64_t auth_persist_failures() const noexcept { return persist_failures_; }
 
  private:
   struct SubContext {
@@ -93,12 +116,18 @@ class GuidanceNode {
   void unsubscribe_all() noexcept;
   static void on_input(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
   static void on_clock(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
-  static void on_plan(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
-  void process_plans(std::int64_t now_us) noexcept;
-  void admit_plan(const PlanInbox::Slot& raw, std::int64_t now_us) noexcept;
+  static void on_command(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
+  bool authenticate(auth::ArsnSlot slot, const char* channel, const lcm_recv_buf_t* rbuf) noexcept;
+  void process_commands(std::int64_t now_us) noexcept;
+  void admit_plan(const CommandInbox::Slot& raw, std::int64_t now_us) noexcept;
+  void admit_arm(const CommandInbox::Slot& raw, std::int64_t now_us) noexcept;
+  void admit_key_cmd(const CommandInbox::Slot& raw, std::int64_t now_us) noexcept;
+  bool command_fresh(std::int64_t utime, std::int64_t now_us) noexcept;
+  void fill_status(std::int64_t now_us) noexcept;
   void process_queue(std::int64_t now_us) noexcept;
   template <typename Msg>
-  bool admit(const RawMessage& raw, std::int64_t now_us, Msg* msg) noexcept;
+  bool admit(int channel, const std::uint8_t* data, std::uint32_t size, std::int64_t now_us,
+             Msg* msg) noexcept;
 
   lcm_t* lcm_;
   NodeConfig cfg_;
@@ -107,6 +136,8 @@ class GuidanceNode {
   std::int64_t future_us_;
   InputQueue queue_;
   std::array<SubContext, kInCount> ctx_{};
+  std::array<SubContext, kCmdCount> cmd_ctx_{};
+  std::array<lcm_subscription_t*, kCmdCount> cmd_subs_{};
   std::array<lcm_subscription_t*, kInCount> subs_{};
   lcm_subscription_t* clock_sub_ = nullptr;
   std::array<SeqTracker, kInCount> seq_;
@@ -119,7 +150,6 @@ class GuidanceNode {
   std::array<bool, kInCount> have_cand_{};
   evade_angles_t cand_angles_{};
   evade_nav_state_t cand_nav_{};
-  evade_arm_t cand_arm_{};
 
   // State carried between cycles.
   guidance::GuidanceInput input_{};
@@ -129,12 +159,28 @@ class GuidanceNode {
   std::int64_t cycles_ = 0;
   std::int64_t publish_failures_ = 0;
 
-  // Uplinked burn plans (EVADE_BURN_PLAN): own bounded inbox, the executor, a decode buffer.
-  lcm_subscription_t* plan_sub_ = nullptr;
-  PlanInbox plan_inbox_;
+  // Commands (plans, arm/disarm, key commands): own bounded inbox, the executor, decode buffers.
+  CommandInbox cmd_inbox_;
   guidance::PlanExecutor plan_exec_;
   evade_burn_plan_t plan_msg_{};
+  evade_arm_t arm_msg_{};
+  evade_key_cmd_t key_msg_{};
   guidance::UplinkedPlan plan_{};
+  std::int64_t plan_ack_id_ = 0;
+  std::int8_t plan_ack_result_ = 0;
+  std::int64_t key_cmd_last_seq_ = 0;
+  auth::KeyCmdResult key_cmd_last_result_ = auth::KeyCmdResult::kNone;
+
+  // Authentication (docs/SECURITY.md).
+  auth::KeyRing keys_;
+  auth::StateFile state_file_;
+  std::int8_t auth_required_mask_ = 0;
+  int verify_budget_left_ = 0;
+  std::uint64_t auth_epoch_ = 0;       ///< +1 per authenticated command that advanced the state
+  std::uint64_t persisted_epoch_ = 0;  ///< every command up to this epoch is on disk
+  bool persist_failed_ = false;        ///< the last write failed: refuse what waits on it
+  std::int64_t persist_failures_ = 0;
+  std::int32_t last_command_key_ = 0;
 
   // Lockstep tick.
   bool tick_pending_ = false;

@@ -1,0 +1,411 @@
+// Only the ground commands the thrusters (docs/SECURITY.md AUTH-1..6, KEY-2, AUTH-4): the
+// node over memq:// against an attacker on the bus. Every attack is refused before anything in
+// the message is used, counted under its reason, and leaves the node's state and its thrust
+// unchanged; the accounting identity holds throughout. The genuine ground (the rig's publisher,
+// signing with the command key) still flies its plans, rotates keys, and a restart does not
+// reopen replay.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "evade/auth/state_file.hpp"
+#include "evade/evade_arm_t.hpp"
+#include "evade/evade_burn_plan_t.hpp"
+#include "evade/evade_key_cmd_t.hpp"
+#include "evade/guidance_lcm/burn_plan_convert.hpp"
+#include "node_harness.hpp"
+
+namespace evade::guidance_lcm::test {
+namespace {
+
+using S = evade_guidance_status_t;
+constexpr std::int64_t kT0 = 1'000'000'000;  // first cycle [us]
+
+// One impulse of 0.1 m/s along track at t_s after kT0: 5 cycles at 1 m/s^2.
+evade_burn_plan_t plan_msg(std::int64_t seq, double t_s = 1.0) {
+  BurnPlan p;
+  p.plan_id = seq;
+  p.n_impulses = 1;
+  p.impulses[0].t_s = t_s;
+  p.impulses[0].dv_rsw_mps = Vec3(0.0, 0.1, 0.0);
+  evade_burn_plan_t m{};
+  to_lcm(p, kT0, seq, kT0, guidance::PlanFrame::kRsw, &m);
+  return m;
+}
+
+// Encodes m signed with key and arsn for sign_channel (not necessarily where it is sent).
+template <typename Msg>
+std::vector<std::uint8_t> signed_bytes(Msg m, const char* sign_channel, const SigningKey& key,
+                                       std::int64_t arsn) {
+  std::vector<std::uint8_t> b(static_cast<std::size_t>(m.getEncodedSize()));
+  const int n = encode_signed(&m, sign_channel, key, arsn, b.data(), static_cast<int>(b.size()));
+  EXPECT_EQ(n, static_cast<int>(b.size()));
+  return b;
+}
+
+void send(Rig& rig, const char* channel, const std::vector<std::uint8_t>& b) {
+  rig.pub.send_bytes(channel, b.data(), static_cast<unsigned>(b.size()));
+}
+
+// Nav only (no angles: the law stays STANDBY) at cycle k; returns the command.
+const evade_thrust_cmd_t& nav_cycle(Rig& rig, int k) {
+  const std::int64_t t = kT0 + k * kPeriodUs;
+  evade_nav_state_t nav{};
+  rig.enc.nav_at(t, &nav);
+  nav.seq = k + 1;
+  rig.pub.send(kChanNav, nav);
+  return rig.cycle(t);
+}
+
+// Runs cycles [k0, k1) and returns how many commanded thrust.
+int thrust_cycles(Rig& rig, int k0, int k1) {
+  int n = 0;
+  for (int k = k0; k < k1; ++k) n += nav_cycle(rig, k).accel_mps2 > 0.0 ? 1 : 0;
+  return n;
+}
+
+std::int64_t reason(const Rig& rig, Reason r) { return rig.node.counts().by_reason[static_cast<int>(r)]; }
+
+void expect_accounted(const Rig& rig) {
+  EXPECT_EQ(rig.node.counts().received, rig.node.counts().accounted());
+}
+
+// An attack on the plan channel: nothing flies, the reason is counted once, identity holds.
+void expect_refused_plan(Rig& rig, Reason why, Verdict verdict = Verdict::kAuthFailed) {
+  EXPECT_EQ(thrust_cycles(rig, 0, 100), 0);
+  EXPECT_EQ(reason(rig, why), 1) << reason_name(why);
+  EXPECT_EQ(verdict == Verdict::kReplayed ? rig.node.counts().replayed
+                                          : rig.node.counts().auth_failed, 1);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, 0);
+  EXPECT_EQ(rig.node.last_status().plan_ack_id, 0);
+  expect_accounted(rig);
+}
+
+TEST(NodeAuth, SignedPlanFliesAndIsAcknowledged) {
+  Rig rig;
+  rig.pub.send(kChanPlan, plan_msg(7));
+  EXPECT_EQ(thrust_cycles(rig, 0, 100), 5);
+  const S& s = rig.node.last_status();
+  EXPECT_EQ(s.plan_ack_id, 7);
+  EXPECT_EQ(s.plan_ack_result, S::PLAN_REJECT_NONE);
+  EXPECT_EQ(s.auth_last_key_id, 1);
+  EXPECT_EQ(s.auth_required, S::AUTH_PLAN | S::AUTH_ARM | S::AUTH_KEY_CMD);
+  EXPECT_EQ(s.n_auth_failed, 0);
+  expect_accounted(rig);
+}
+
+TEST(NodeAuth, UnsignedPlanIsRefused) {
+  Rig rig;
+  rig.pub.set_signing(false);
+  rig.pub.send(kChanPlan, plan_msg(1));
+  rig.pub.set_signing(true);
+  expect_refused_plan(rig, Reason::kUnsigned);
+}
+
+TEST(NodeAuth, PlanSignedWithAnUnknownKeyIsRefused) {
+  Rig rig;
+  send(rig, kChanPlan, signed_bytes(plan_msg(1), kChanPlan, test_key(99, 0x77), 5));
+  expect_refused_plan(rig, Reason::kUnknownKey);
+}
+
+TEST(NodeAuth, PlanWithTheGroundsKeyIdButAnotherKeyIsRefused) {
+  Rig rig;
+  send(rig, kChanPlan, signed_bytes(plan_msg(1), kChanPlan, test_key(1, 0x77), 5));
+  expect_refused_plan(rig, Reason::kBadMac);
+}
+
+TEST(NodeAuth, PlanSignedForAnotherChannelIsRefused) {
+  Rig rig;
+  send(rig, kChanPlan, signed_bytes(plan_msg(1), kChanArm, test_command_key(), 5));
+  expect_refused_plan(rig, Reason::kBadMac);
+}
+
+TEST(NodeAuth, PlanSignedWithTheSensorKeyIsRefused) {
+  Rig rig;
+  send(rig, kChanPlan, signed_bytes(plan_msg(1), kChanPlan, test_sensor_key(), 5));
+  expect_refused_plan(rig, Reason::kWrongKeyRole);
+}
+
+TEST(NodeAuth, ModifiedSignedPlanIsRefused) {
+  Rig rig;
+  std::vector<std::uint8_t> b = signed_bytes(plan_msg(1), kChanPlan, test_command_key(), 5);
+  b[30] ^= 0x01;  // inside impulse_t_s
+  send(rig, kChanPlan, b);
+  expect_refused_plan(rig, Reason::kBadMac);
+}
+
+// The bytes of NodePlan.OversizedAndUndecodablePlanBytesAreRejectedAndAccounted, with the
+// plan channel's authentication on: refused before the decoder sees them.
+TEST(NodeAuth, JunkAndTrailingBytesAreRefusedBeforeTheDecoder) {
+  Rig rig;
+  const std::uint8_t junk[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  rig.pub.send_bytes(kChanPlan, junk, sizeof(junk));
+  std::vector<std::uint8_t> b = signed_bytes(plan_msg(1), kChanPlan, test_command_key(), 5);
+  b.push_back(0);  // one trailing byte after the MAC: the trailer read is shifted by a byte,
+  send(rig, kChanPlan, b);  // its key id 00 00 01 00 = 256 is no key
+  b.pop_back();
+  b[20] ^= 0x40;  // a flipped bit in the body: the key id is right, the MAC is not
+  send(rig, kChanPlan, b);
+  EXPECT_EQ(thrust_cycles(rig, 0, 100), 0);
+  EXPECT_EQ(reason(rig, Reason::kTooShortForTrailer), 1);
+  EXPECT_EQ(reason(rig, Reason::kUnknownKey), 1);
+  EXPECT_EQ(reason(rig, Reason::kBadMac), 1);
+  EXPECT_EQ(reason(rig, Reason::kDecodeFailed), 0);
+  expect_accounted(rig);
+}
+
+TEST(NodeAuth, SignedPlanResentByteForByteIsAReplay) {
+  Rig rig;
+  const std::vector<std::uint8_t> b = signed_bytes(plan_msg(1), kChanPlan, test_command_key(), 5);
+  send(rig, kChanPlan, b);
+  EXPECT_EQ(thrust_cycles(rig, 0, 100), 5);
+  send(rig, kChanPlan, b);
+  EXPECT_EQ(thrust_cycles(rig, 100, 200), 0);
+  EXPECT_EQ(reason(rig, Reason::kReplayedArsn), 1);
+  EXPECT_EQ(rig.node.counts().replayed, 1);
+  EXPECT_EQ(rig.node.last_status().n_replayed, 1);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, 1);
+  expect_accounted(rig);
+}
+
+TEST(NodeAuth, SignedPlanWithALowerArsnIsAReplay) {
+  Rig rig;
+  send(rig, kChanPlan, signed_bytes(plan_msg(1), kChanPlan, test_command_key(), 50));
+  EXPECT_EQ(thrust_cycles(rig, 0, 100), 5);
+  send(rig, kChanPlan, signed_bytes(plan_msg(2, 3.0), kChanPlan, test_command_key(), 49));
+  EXPECT_EQ(thrust_cycles(rig, 100, 200), 0);
+  EXPECT_EQ(reason(rig, Reason::kReplayedArsn), 1);
+  EXPECT_EQ(rig.node.last_status().plan_ack_id, 1);
+  expect_accounted(rig);
+}
+
+// A forged plan with ARSN = INT64_MAX must not advance the ARSN (the MAC is checked first):
+// the ground's next plan still flies.
+TEST(NodeAuth, ForgedPlanWithMaximalArsnDoesNotLockOutTheGround) {
+  Rig rig;
+  evade_burn_plan_t forged = plan_msg(std::numeric_limits<std::int64_t>::max());
+  send(rig, kChanPlan, signed_bytes(forged, kChanPlan, test_key(1, 0x99),
+                                    std::numeric_limits<std::int64_t>::max()));
+  EXPECT_EQ(thrust_cycles(rig, 0, 10), 0);
+  EXPECT_EQ(reason(rig, Reason::kBadMac), 1);
+  rig.pub.send(kChanPlan, plan_msg(3, 1.5));  // genuine, ARSN 1
+  EXPECT_EQ(thrust_cycles(rig, 10, 120), 5);
+  EXPECT_EQ(rig.node.last_status().plan_ack_id, 3);
+  EXPECT_EQ(rig.node.last_status().plan_n_accepted, 1);
+  expect_accounted(rig);
+}
+
+TEST(NodeAuth, UnsignedArmAndDisarmAreRefused) {
+  NodeConfig cfg;
+  cfg.guidance.armed = false;
+  Rig rig(cfg);
+  evade_arm_t arm{};
+  arm.utime = kT0;
+  arm.seq = 1;
+  arm.armed = 1;
+  rig.pub.set_signing(false);
+  rig.pub.send(kChanArm, arm);
+  rig.pub.set_signing(true);
+  nav_cycle(rig, 0);
+  EXPECT_FALSE(rig.node.armed());
+  rig.pub.send(kChanArm, arm);  // the ground's, signed
+  nav_cycle(rig, 1);
+  EXPECT_TRUE(rig.node.armed());
+  arm.armed = 0;
+  arm.seq = 2;
+  arm.utime = kT0 + 2 * kPeriodUs;
+  rig.pub.set_signing(false);
+  rig.pub.send(kChanArm, arm);
+  nav_cycle(rig, 2);
+  EXPECT_TRUE(rig.node.armed()) << "an unsigned disarm must not cancel the ground's arm";
+  EXPECT_EQ(reason(rig, Reason::kUnsigned), 2);
+  expect_accounted(rig);
+}
+
+// Sensors required: a spoofed nav (the genuine one with seq + 1 and a rotated orbit) and a
+// single angles message from the attacker are refused; the law never sees them.
+TEST(NodeAuth, SpoofedNavAndAnglesAreRefusedWhenSensorsAreRequired) {
+  NodeConfig cfg;
+  cfg.auth.nav_required = cfg.auth.angles_required = true;
+  Rig rig(cfg);
+  rig.pub.send(kChanPlan, plan_msg(1, 1.0));
+  int thrust = 0;
+  for (int k = 0; k < 100; ++k) {
+    const std::int64_t t = kT0 + k * kPeriodUs;
+    evade_nav_state_t nav{};
+    rig.enc.nav_at(t, &nav);
+    nav.seq = 2 * k + 1;
+    rig.pub.send(kChanNav, nav);  // genuine, signed with the sensor key
+    evade_nav_state_t spoof = nav;
+    spoof.seq = nav.seq + 1;
+    spoof.r_eci_m[0] = -nav.r_eci_m[0];  // rotated orbit
+    spoof.v_eci_mps[1] = -nav.v_eci_mps[1];
+    rig.pub.set_signing(false);
+    rig.pub.send(kChanNav, spoof);
+    if (k == 10) {
+      evade_angles_t a{};
+      rig.enc.angles_at(t, &a);
+      a.seq = 1;
+      rig.pub.send(kChanAngles, a);
+    }
+    rig.pub.set_signing(true);
+    const evade_thrust_cmd_t& c = rig.cycle(t);
+    EXPECT_NE(c.mode, evade_thrust_cmd_t::MODE_SAFE) << "cycle " << k;
+    if (c.accel_mps2 > 0.0) {  // along +S of the genuine orbit, never the spoofed one's
+      const Vec3 r(nav.r_eci_m[0], nav.r_eci_m[1], nav.r_eci_m[2]);
+      const Vec3 v(nav.v_eci_mps[0], nav.v_eci_mps[1], nav.v_eci_mps[2]);
+      const Vec3 s_axis = r.cross(v).cross(r).normalized();
+      EXPECT_GT(s_axis.dot(Vec3(c.u_eci[0], c.u_eci[1], c.u_eci[2])), 1.0 - 1e-12) << "cycle " << k;
+      ++thrust;
+    }
+  }
+  EXPECT_EQ(thrust, 5);
+  EXPECT_EQ(reason(rig, Reason::kUnsigned), 101);  // 100 navs + 1 angles
+  EXPECT_EQ(rig.node.counts().auth_failed, 101);
+  EXPECT_EQ(rig.node.last_status().plan_end, S::PLAN_END_COMPLETED);
+  EXPECT_EQ(rig.node.watchdog_cycles(), 0);
+  expect_accounted(rig);
+}
+
+TEST(NodeAuth, SensorMessagesSignedWithTheCommandKeyAreRefused) {
+  NodeConfig cfg;
+  cfg.auth.nav_required = true;
+  Rig rig(cfg);
+  evade_nav_state_t nav{};
+  rig.enc.nav_at(kT0, &nav);
+  nav.seq = 1;
+  send(rig, kChanNav, signed_bytes(nav, kChanNav, test_command_key(), 9));
+  rig.cycle(kT0);
+  EXPECT_EQ(reason(rig, Reason::kWrongKeyRole), 1);
+  expect_accounted(rig);
+}
+
+// KEY-2: the ground activates its second key with the first, retires the first with the
+// second; the retired key's plans are refused, the new key's fly.
+TEST(NodeAuth, KeyRotationRetiresTheOldKey) {
+  NodeSecurity sec = test_security();
+  const SigningKey k3 = test_key(3, 0x33);
+  ASSERT_EQ(sec.keys.add(k3.id, auth::KeyRole::kCommand, k3.key, auth::KeyState::kStandby), nullptr);
+  Rig rig(NodeConfig{}, 100000, sec);
+  send(rig, kChanPlan, signed_bytes(plan_msg(1), kChanPlan, k3, 10));  // standby: refused
+  nav_cycle(rig, 0);
+  EXPECT_EQ(reason(rig, Reason::kStandbyKey), 1);
+  evade_key_cmd_t kc{};
+  kc.utime = kT0;
+  kc.seq = 1;
+  kc.op = evade_key_cmd_t::OP_ACTIVATE;
+  kc.key_id = 3;
+  rig.pub.send(kChanKeyCmd, kc);  // signed with key 1
+  nav_cycle(rig, 1);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_result, S::KEY_CMD_DONE);
+  EXPECT_EQ(rig.node.last_status().auth_active_command_keys, 2);
+  kc.seq = 2;
+  kc.op = evade_key_cmd_t::OP_RETIRE;
+  kc.key_id = 1;
+  send(rig, kChanKeyCmd, signed_bytes(kc, kChanKeyCmd, k3, 11));
+  nav_cycle(rig, 2);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_seq, 2);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_result, S::KEY_CMD_DONE);
+  EXPECT_EQ(rig.node.last_status().auth_active_command_keys, 1);
+  rig.pub.send(kChanPlan, plan_msg(2, 1.0));  // key 1, now retired
+  EXPECT_EQ(thrust_cycles(rig, 3, 80), 0);
+  EXPECT_EQ(reason(rig, Reason::kRetiredKey), 1);
+  send(rig, kChanPlan, signed_bytes(plan_msg(3, 2.0), kChanPlan, k3, 12));
+  EXPECT_EQ(thrust_cycles(rig, 80, 160), 5);
+  EXPECT_EQ(rig.node.last_status().plan_ack_id, 3);
+  // Retiring the last active command key is refused.
+  kc.seq = 3;
+  kc.key_id = 3;
+  send(rig, kChanKeyCmd, signed_bytes(kc, kChanKeyCmd, k3, 13));
+  nav_cycle(rig, 160);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_result, S::KEY_CMD_LAST_KEY);
+  expect_accounted(rig);
+}
+
+// A scratch directory for a state file, removed with its contents.
+struct TempDir {
+  TempDir() {
+    char tmpl[] = "/tmp/evade-auth-XXXXXX";
+    const char* d = mkdtemp(tmpl);
+    path = d != nullptr ? d : "";
+  }
+  ~TempDir() {
+    (void)std::remove((path + "/state").c_str());
+    (void)std::remove((path + "/state.tmp").c_str());
+    (void)rmdir(path.c_str());
+  }
+  std::string path;
+};
+
+// AUTH-4: with a state file, a command takes effect only after the ARSN it advanced is on
+// disk (persist_auth_state between cycles), and a restarted node refuses its replay.
+TEST(NodeAuth, ArsnSurvivesARestart) {
+  TempDir dir;
+  ASSERT_FALSE(dir.path.empty());
+  NodeSecurity sec = test_security();
+  sec.state_path = dir.path + "/state";
+  const std::vector<std::uint8_t> b = signed_bytes(plan_msg(1), kChanPlan, test_command_key(), 1000);
+  {
+    Rig rig(NodeConfig{}, 100000, sec);
+    send(rig, kChanPlan, b);
+    nav_cycle(rig, 0);
+    EXPECT_EQ(rig.node.last_status().plan_n_accepted, 0) << "waits for the state on disk";
+    ASSERT_EQ(rig.node.persist_auth_state(), 0);
+    nav_cycle(rig, 1);
+    EXPECT_EQ(rig.node.last_status().plan_n_accepted, 1);
+  }
+  Rig rig(NodeConfig{}, 100000, sec);  // restart from the same state file
+  send(rig, kChanPlan, b);
+  nav_cycle(rig, 2);
+  EXPECT_EQ(rig.node.persist_auth_state(), 0);
+  EXPECT_EQ(thrust_cycles(rig, 3, 100), 0);
+  EXPECT_EQ(reason(rig, Reason::kReplayedArsn), 1);
+  send(rig, kChanPlan, signed_bytes(plan_msg(2, 3.0), kChanPlan, test_command_key(), 1001));
+  nav_cycle(rig, 100);
+  EXPECT_EQ(rig.node.persist_auth_state(), 0);
+  EXPECT_EQ(thrust_cycles(rig, 101, 200), 5);
+  expect_accounted(rig);
+}
+
+// AUTH-4: a state file that cannot be written refuses the command waiting on it.
+TEST(NodeAuth, CommandWhoseArsnCannotBePersistedIsRefused) {
+  NodeSecurity sec = test_security();
+  sec.state_path = "/nonexistent-evade-dir/state";
+  Rig rig(NodeConfig{}, 100000, sec);
+  rig.pub.send(kChanPlan, plan_msg(1));
+  nav_cycle(rig, 0);
+  EXPECT_LT(rig.node.persist_auth_state(), 0);
+  EXPECT_EQ(thrust_cycles(rig, 1, 100), 0);
+  EXPECT_EQ(reason(rig, Reason::kNotPersisted), 1);
+  EXPECT_EQ(rig.node.last_status().auth_state_persist_failures, 1);
+  expect_accounted(rig);
+}
+
+// AUTH-5: past the cycle's verification budget messages are dropped and counted; the next
+// cycle's budget lets the ground's retransmission through.
+TEST(NodeAuth, VerificationBudgetBoundsTheWorkOfAFlood) {
+  NodeConfig cfg;
+  cfg.auth.max_verify_per_cycle = 8;
+  Rig rig(cfg);
+  for (int i = 0; i < 20; ++i) {
+    send(rig, kChanPlan, signed_bytes(plan_msg(100 + i), kChanPlan, test_key(1, 0x99), 1 + i));
+  }
+  rig.pub.send(kChanPlan, plan_msg(1, 2.0));  // the ground's, after the flood: over budget
+  nav_cycle(rig, 0);
+  EXPECT_EQ(rig.node.counts().auth_failed, 8);
+  EXPECT_EQ(reason(rig, Reason::kVerifyBudget), 13);
+  rig.pub.send(kChanPlan, plan_msg(1, 2.0));  // its retransmission, signed afresh
+  EXPECT_EQ(thrust_cycles(rig, 1, 150), 5);
+  EXPECT_EQ(rig.node.last_status().plan_ack_id, 1);
+  expect_accounted(rig);
+}
+
+}  // namespace
+}  // namespace evade::guidance_lcm::test
