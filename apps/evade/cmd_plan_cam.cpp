@@ -163,6 +163,7 @@ int run(const Options& o) {
   const CamPlan p = plan_cam(in.conj, o.req, in.acfg, in.cfg);
   nlohmann::json j = plan_json(p, in);
   j["source"] = in.source;
+  int uplink_rc = 0;
   if (plan_wanted(o.out)) {
     PlanOutputOptions out = o.out;
     if (out.publish && out.epoch_utime_us == 0 && !in.epoch_known)
@@ -172,7 +173,7 @@ int run(const Options& o) {
       out.epoch_utime_us = unix_utime_from_j2000(in.epoch_j2000_s + p.burn_from_epoch_s);
     const BurnPlan bp = make_cam_burn_plan(p, plan_id(out));
     j["plan"] = impulses_json(bp);
-    output_plan(out, bp, &j);
+    uplink_rc = output_plan(out, bp, &j);
   }
   if (o.json) print_json(j); else print_text(p, in);
   if (!p.verified_ok) {
@@ -180,7 +181,7 @@ int run(const Options& o) {
                        p.verified.pc, p.verified.miss_m);
     return 1;
   }
-  return 0;
+  return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 
 Runner setup(CLI::App& app) {

@@ -206,16 +206,17 @@ int run_plan_formation(const PlanFormationOptions& o) {
   sc.check_all_used();
   const PlanResult r = plan(in, o.numerical_limits);
   nlohmann::json j = result_json(in, r, o.numerical_limits, sc);
+  int uplink_rc = 0;
   if (plan_wanted(o.out)) {
     const BurnPlan bp = make_burn_plan(in.spec, in.threatened, r.dec, in.propagation, plan_id(o.out));
-    output_plan(o.out, bp, &j);
+    uplink_rc = output_plan(o.out, bp, &j);
   }
   if (o.common.json) {
     print_json(j);
   } else {
     print_text(in, r);
   }
-  return 0;
+  return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 
 Runner setup(CLI::App& app) {

@@ -207,14 +207,15 @@ int run(const Options& o) {
   j["scenario"] = sc.source();
   j["used"] = sc.used();
 
-  if (plan_wanted(o.out)) output_plan(o.out, make_burn_plan(res, plan_id(o.out)), &j);
+  const int uplink_rc =
+      plan_wanted(o.out) ? output_plan(o.out, make_burn_plan(res, plan_id(o.out)), &j) : 0;
 
   if (o.common.json) {
     print_json(j);
   } else {
     print_text(in.objective, res, c);
   }
-  return 0;
+  return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 
 Runner setup(CLI::App& app) {

@@ -279,14 +279,15 @@ int run_threat_area(const ThreatCmdOptions& o) {
   request.sweep_transfer_s = o.sweep_transfer;
   const ThreatStudy study = run_threat_study(in, request, stderr_progress());
   nlohmann::json j = study_json(sc, in, study);
-  if (plan_wanted(o.out)) output_plan(o.out, make_burn_plan(study.evasion, plan_id(o.out)), &j);
+  const int uplink_rc =
+      plan_wanted(o.out) ? output_plan(o.out, make_burn_plan(study.evasion, plan_id(o.out)), &j) : 0;
   if (!o.plot.empty() && !write_plot(o.plot, j)) return 1;
   if (o.common.json) {
     print_json(j);
   } else {
     print_text(in, study);
   }
-  return 0;
+  return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 
 Runner setup(CLI::App& app) {

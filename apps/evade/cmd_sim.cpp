@@ -28,6 +28,7 @@
 #include "sim_plan.hpp"
 #include "evade/distributed/distributed_monte_carlo.hpp"
 #include "evade/guidance/guidance_law.hpp"
+#include "evade/lcm_link/command_uplink.hpp"
 #include "evade/lcm_link/realtime_lcm_link.hpp"
 #include "evade/lcm_link/sim_lcm_endpoint.hpp"
 #include "evade/sim/monte_carlo.hpp"
@@ -60,6 +61,8 @@ struct SimOptions {
   bool lockstep = true;
   double lcm_timeout_s = 5.0;
   bool realtime = false;
+  std::string key_file;  ///< --key: sign nav, angles and the sim clock with this sensor key
+  int key_id = 0;
   evade::cli::SimPlanOptions plan;
 };
 
@@ -126,15 +129,24 @@ void check_run_options(const SimOptions& o) {
     throw std::invalid_argument("--realtime needs --lcm URL (a node running at its own rate)");
   }
   if (o.realtime && o.runs > 0) throw std::invalid_argument("--runs cannot be combined with --realtime");
+  if (!o.key_file.empty() && o.lcm_url.empty()) {
+    throw std::invalid_argument("--key needs --lcm URL (it signs the messages sent to the node)");
+  }
   if (!o.plot.empty() && o.csv.empty()) {
     throw std::invalid_argument("--plot needs --csv FILE (the plot is drawn from the CSV)");
   }
 }
 
+// --key: the sensor key that signs nav, angles and the sim clock (docs/SECURITY.md AUTH-3).
+evade::guidance_lcm::SigningKey sensor_key(const SimOptions& o) {
+  if (o.key_file.empty()) return {};
+  return evade::lcm_link::load_signing_key(o.key_file, o.key_id, evade::auth::KeyRole::kSensor);
+}
+
 std::unique_ptr<sim::GuidanceEndpoint> make_endpoint(const SimOptions& o,
                                                      const sim::SimConfig& cfg) {
   if (!o.lcm_url.empty()) {
-    return lcm_link::make_lcm_endpoint(o.lcm_url, o.lockstep, o.lcm_timeout_s);
+    return lcm_link::make_lcm_endpoint(o.lcm_url, o.lockstep, o.lcm_timeout_s, sensor_key(o));
   }
   return sim::make_in_process_endpoint(cfg.guidance, cfg.guidance.armed);
 }
@@ -157,7 +169,7 @@ sim::SimResult simulate(const SimOptions& o, const sim::SimConfig& cfg,
 
 // --realtime: truth at wall-clock pace against a node at its own fixed rate.
 sim::RealtimeResult simulate_realtime(const SimOptions& o, const sim::SimConfig& cfg) {
-  const std::unique_ptr<sim::RealtimeLink> link = lcm_link::make_realtime_lcm_link(o.lcm_url);
+  const std::unique_ptr<sim::RealtimeLink> link = lcm_link::make_realtime_lcm_link(o.lcm_url, sensor_key(o));
   std::ofstream csv;
   sim::RealtimeResult r = sim::run_realtime_simulation(cfg, *link, csv_writer(o, csv));
   if (r.late_steps > 0) {
@@ -198,6 +210,7 @@ nlohmann::json result_json(const SimOptions& o, const sim::SimResult& r,
   j["measurements"] = r.measurements;
   j["dropouts"] = r.dropouts;
   j["guidance"] = o.lcm_url.empty() ? "in_process" : "lcm";
+  if (!o.lcm_url.empty()) j["sensors_signed"] = !o.key_file.empty();
   if (r.has_final_status) {
     j["final_mode"] = guidance::mode_name(r.final_status.mode);
     j["final_reason"] = guidance::reason_name(r.final_status.reason);
@@ -358,6 +371,11 @@ evade::cli::Runner setup(CLI::App& app) {
   app.add_flag("--realtime", o->realtime,
                "with --lcm: truth at wall-clock pace, the node at its own fixed rate "
                "(no lockstep); adds command_age_ms_* and sim_late_steps");
+  app.add_option("--key", o->key_file,
+                 "with --lcm: sign nav, angles and the sim clock with this sensor key file "
+                 "(`evade keygen --role sensor`; docs/SECURITY.md)");
+  app.add_option("--key-id", o->key_id, "which sensor key of --key (default: its only one)")
+      ->check(CLI::Range(1, 2147483647));
   app.add_option("--plan", o->plan.plan_file,
                  "fly this burn-plan file (`evade plan ... --plan-out`) with the in-process "
                  "law + plan executor on the scenario's objects");

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/core/burn_plan.hpp"
+#include "evade/lcm_link/command_uplink.hpp"
 
 namespace evade::cli {
 
@@ -23,9 +24,14 @@ struct PlanOutputOptions {
   long long epoch_utime_us = 0;               ///< utime of plan t = 0; 0: the publish time
   std::string frame = "rsw";                  ///< frame the node flies: rsw | eci
   std::string plan_out;                       ///< plan file to write; empty: none
+  std::string key_file;                       ///< --key: sign with this command key and wait for the ack
+  int key_id = 0;                             ///< --key-id: which key of the file (0: its only command key)
+  double ack_timeout_s = 5.0;                 ///< --ack-timeout-s
+  double retransmit_s = 0.25;                 ///< --retransmit-s
 };
 
-/// Adds --publish, --lcm-url, --channel, --seq, --epoch-utime, --frame, --plan-out.
+/// Adds --publish, --lcm-url, --channel, --seq, --epoch-utime, --frame, --plan-out, --key,
+/// --key-id, --ack-timeout-s, --retransmit-s.
 void add_plan_output_options(CLI::App& app, PlanOutputOptions& o);
 
 /// True when the options ask for the plan (--publish or --plan-out).
@@ -36,10 +42,15 @@ std::int64_t plan_id(const PlanOutputOptions& o);
 
 /// With --plan-out: writes the plan file and adds "plan_file" to *j. With --publish:
 /// publishes plan and adds "published" (channel, seq, utime, epoch_utime, frame, impulses)
-/// to *j. Throws std::invalid_argument for a plan the file or the message cannot carry (e.g.
+/// to *j; with --key as well, signs it and retransmits until the node acknowledges it
+/// (lcm_link::uplink_plan) and adds "uplink" (outcome, reason, transmissions, ack_s). Returns
+/// the exit code: 0, or with --key 3 (rejected, reason named) or 4 (no acknowledgement). Throws std::invalid_argument for a plan the file or the message cannot carry (e.g.
 /// --frame eci without ECI Δv) or a file that cannot be written, std::runtime_error when LCM
 /// fails.
-void output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j);
+int output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j);
+
+/// An uplink's outcome as JSON (outcome, code, reason, key_id, transmissions, ack_s, exit_code).
+nlohmann::json uplink_json(const lcm_link::UplinkResult& r, std::int32_t key_id);
 
 /// The impulses as JSON (t_s, dv_rsw_mps, dv_eci_mps or null).
 nlohmann::json impulses_json(const BurnPlan& plan);

@@ -18,6 +18,7 @@
 #include <lcm/lcm.h>
 #include <nlohmann/json.hpp>
 
+#include "evade/auth/key_file.hpp"
 #include "evade/config/scenario.hpp"
 #include "evade/guidance_lcm/internal/node_core.hpp"
 #include "evade/guidance_lcm/lcm_url.hpp"
@@ -85,18 +86,28 @@ void print_banner(const evade::node::NodeOptions& o, const evade::guidance_lcm::
                      c.guidance.armed ? "armed" : "disarmed");
 }
 
+void warn_if_no_command_key(const evade::guidance_lcm::NodeConfig& c,
+                            const evade::guidance_lcm::NodeSecurity& sec) {
+  if ((c.auth.plan_required || c.auth.arm_required) && sec.keys.active_command_keys() == 0) {
+    (void)std::fprintf(stderr, "evade_guidance_node: no command key loaded (--keys): every plan "
+                       "and arm command will be refused (docs/SECURITY.md)\n");
+  }
+}
+
 void print_summary(const evade::guidance_lcm::GuidanceNode& n, const char* why) {
   const auto& c = n.counts();
   const auto& cs = n.compute_stats();
   (void)std::fprintf(stderr,
                      "evade_guidance_node: stopped (%s) after %lld cycles; inputs %lld = consumed "
-                     "%lld + rejected %lld + stale %lld + superseded %lld + dropped %lld; seq gaps "
+                     "%lld + rejected %lld + stale %lld + superseded %lld + dropped %lld + auth_failed "
+                     "%lld + replayed %lld; seq gaps "
                      "%lld; watchdog cycles %lld; overruns %lld; cycle p50 %.1f us p99 %.1f us max "
                      "%.1f us\n",
                      why, static_cast<long long>(n.cycles()), static_cast<long long>(c.received),
                      static_cast<long long>(c.consumed), static_cast<long long>(c.rejected),
                      static_cast<long long>(c.stale), static_cast<long long>(c.superseded),
-                     static_cast<long long>(c.dropped), static_cast<long long>(c.seq_gaps),
+                     static_cast<long long>(c.dropped), static_cast<long long>(c.auth_failed),
+                     static_cast<long long>(c.replayed), static_cast<long long>(c.seq_gaps),
                      static_cast<long long>(n.watchdog_cycles()),
                      static_cast<long long>(cs.overruns()), cs.quantile(0.5), cs.quantile(0.99),
                      cs.max_us());
@@ -106,7 +117,9 @@ nlohmann::json inputs_json(const evade::guidance_lcm::InputCounts& c) {
   nlohmann::json j = {{"received", c.received},     {"consumed", c.consumed},
                       {"rejected", c.rejected},     {"stale", c.stale},
                       {"superseded", c.superseded}, {"dropped", c.dropped},
-                      {"seq_gaps", c.seq_gaps}};
+                      {"auth_failed", c.auth_failed}, {"replayed", c.replayed},
+                      {"seq_gaps", c.seq_gaps},
+                      {"identity", c.accounted() == c.received}};
   nlohmann::json reasons = nlohmann::json::object();
   for (int r = 1; r < static_cast<int>(evade::guidance_lcm::Reason::kCount); ++r) {
     if (c.by_reason[r] != 0)
@@ -115,6 +128,39 @@ nlohmann::json inputs_json(const evade::guidance_lcm::InputCounts& c) {
   }
   j["by_reason"] = reasons;
   return j;
+}
+
+// docs/SECURITY.md "What an operator watches": the policy, each key's state (never its
+// bytes) and the authentication counters.
+nlohmann::json auth_json(const evade::guidance_lcm::GuidanceNode& n) {
+  using evade::auth::KeyState;
+  const auto& a = n.config().auth;
+  nlohmann::json keys = nlohmann::json::array();
+  for (std::size_t i = 0; i < n.keys().size(); ++i) {
+    const auto& e = n.keys().entry(i);
+    const char* st = e.state == KeyState::kActive    ? "active"
+                     : e.state == KeyState::kStandby ? "standby"
+                                                     : "retired";
+    keys.push_back({{"id", e.id}, {"role", evade::auth::role_name(e.role)}, {"state", st}});
+  }
+  const auto& c = n.counts();
+  using evade::guidance_lcm::Reason;
+  nlohmann::json reasons = nlohmann::json::object();
+  for (Reason r : {Reason::kUnsigned, Reason::kUnknownKey, Reason::kBadMac, Reason::kStandbyKey,
+                   Reason::kRetiredKey, Reason::kWrongKeyRole, Reason::kTooShortForTrailer,
+                   Reason::kReplayedArsn, Reason::kVerifyBudget, Reason::kNotPersisted}) {
+    reasons[evade::guidance_lcm::reason_name(r)] = c.by_reason[static_cast<int>(r)];
+  }
+  auto req = [](bool b) { return b ? "required" : "off"; };
+  return {{"required", {{"plan", req(a.plan_required)}, {"arm", req(a.arm_required)},
+                        {"key_cmd", "required"}, {"nav", req(a.nav_required)},
+                        {"angles", req(a.angles_required)}, {"clock", req(a.clock_required)}}},
+          {"keys", keys},
+          {"active_command_keys", n.keys().active_command_keys()},
+          {"auth_failed", c.auth_failed},
+          {"replayed", c.replayed},
+          {"by_reason", reasons},
+          {"state_persist_failures", n.auth_persist_failures()}};
 }
 
 nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool lockstep,
@@ -142,6 +188,13 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
                               {"p99_last_1024", ws.quantile(0.99)},
                               {"max", ws.max_us()}};
   }
+  j["auth"] = auth_json(n);
+  const auto& ps = n.plan_executor().status();
+  j["dv_used_mps"] = n.law().status().dv_used_mps;
+  j["plan"] = {{"accepted", ps.accepted},
+               {"dv_total_mps", ps.dv_total_mps},
+               {"ack_id", n.last_status().plan_ack_id},
+               {"ack_result", n.last_status().plan_ack_result}};
   j["exit_reason"] = res.why;
   return j;
 }
@@ -157,7 +210,8 @@ void install_signal_handlers() {
 }
 
 // Opens LCM, runs the loop until it stops, reports. Returns the exit code.
-int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::NodeConfig& cfg) {
+int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::NodeConfig& cfg,
+             const evade::guidance_lcm::NodeSecurity& sec) {
   using namespace evade;
   const std::string in_url = guidance_lcm::lcm_url_with_recv_buf(
       opts.lcm_url, std::getenv("LCM_DEFAULT_URL"), static_cast<std::size_t>(cfg.recv_buf_bytes));
@@ -165,7 +219,8 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
   LcmPtr in = open_lcm(in_url);
   LcmPtr out;
   if (!opts.out_lcm_url.empty()) out = open_lcm(opts.out_lcm_url);
-  guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get());
+  warn_if_no_command_key(cfg, sec);
+  guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get(), sec);
   install_signal_handlers();
   // try_realtime says on stderr what was refused; the node runs on without it, by design.
   if (opts.realtime) (void)node::try_realtime(opts.rt_priority);
@@ -199,14 +254,16 @@ int node_main(int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   guidance_lcm::NodeConfig cfg;
-  try {
+  guidance_lcm::NodeSecurity sec;
+  try {  // a bad key file or auth state is bad input too: exit 2, naming the file
     cfg = node::make_node_config(opts);
+    sec = node::make_node_security(opts, cfg);
   } catch (const std::exception& e) {
     (void)std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
     return 2;
   }
   try {
-    return run_node(opts, cfg);
+    return run_node(opts, cfg, sec);
   } catch (const std::invalid_argument& e) {
     (void)std::fprintf(stderr, "evade_guidance_node: invalid input: %s\n", e.what());
     return 2;

@@ -107,8 +107,11 @@ LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, cons
       break;
     }
     node.run_cycle(now_ns(CLOCK_REALTIME) / 1000);
+    node.record_compute_time(static_cast<double>(now_ns(CLOCK_MONOTONIC) - wake) * 1e-3);
+    // Between cycles (AUTH-4): a command that advanced the anti-replay state waits for this
+    // write; a failure is counted by the node and refuses the commands waiting on it.
+    (void)node.persist_auth_state();
     const std::int64_t done = now_ns(CLOCK_MONOTONIC);
-    node.record_compute_time(static_cast<double>(done - wake) * 1e-3);
 
     deadline += period_ns;
     if (done > deadline) {  // overrun: count once, re-anchor on the next future boundary
@@ -152,6 +155,7 @@ LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, const LoopLimits& lim,
     last_tick = t;
     node.run_cycle(tick_utime);
     node.record_compute_time(static_cast<double>(now_ns(CLOCK_MONOTONIC) - t) * 1e-3);
+    (void)node.persist_auth_state();  // counted by the node (AUTH-4)
     if (lim.max_cycles > 0 && node.cycles() >= lim.max_cycles) {
       res.why = "max cycles reached";
       break;

@@ -3,6 +3,9 @@
 #include "node_options.hpp"
 
 #include <stdexcept>
+#include <time.h>
+
+#include "evade/auth/key_file.hpp"
 
 #include "evade/config/read_params.hpp"
 #include "evade/config/scenario.hpp"
@@ -41,6 +44,19 @@ void add_options(CLI::App& app, NodeOptions& o) {
   app.add_flag("--start-disarmed", o.start_disarmed, "start disarmed (evade_arm_t arms)");
   app.add_flag("--stats-json", o.stats_json, "print run statistics as JSON on stdout at exit");
   app.add_flag("--quiet", o.quiet, "no progress messages on stderr");
+  app.add_option("--keys", o.key_files,
+                 "key file written by `evade keygen` (mode 0600; repeatable): command and sensor "
+                 "keys (docs/SECURITY.md)");
+  app.add_option("--auth-state", o.auth_state,
+                 "file of the persisted key states and command ARSNs (required with --keys)");
+  app.add_option("--auth-commands", o.auth_commands,
+                 "required|off: plans and arm commands must be signed = node.auth.plan_required, "
+                 "node.auth.arm_required (default required)")
+      ->check(CLI::IsMember({"required", "off"}));
+  app.add_option("--auth-sensors", o.auth_sensors,
+                 "required|off: nav, angles and sim-clock messages must be signed = "
+                 "node.auth.nav_required, .angles_required, .clock_required (default off)")
+      ->check(CLI::IsMember({"required", "off"}));
 }
 
 void note_given(const CLI::App& app, NodeOptions& o) {
@@ -79,11 +95,36 @@ guidance_lcm::NodeConfig make_node_config(const NodeOptions& o) {
   for (const ParamFlag& f : o.params) {
     if (f.given) apply_flag(f, &c);
   }
+  if (!o.auth_commands.empty()) {
+    c.auth.plan_required = c.auth.arm_required = o.auth_commands == "required";
+  }
+  if (!o.auth_sensors.empty()) {
+    const bool on = o.auth_sensors == "required";
+    c.auth.nav_required = c.auth.angles_required = c.auth.clock_required = on;
+  }
   if (o.start_disarmed) c.guidance.armed = false;
   c.lockstep = o.lockstep;
   const std::string err = c.validate();
   if (!err.empty()) throw std::invalid_argument(err);
   return c;
+}
+
+guidance_lcm::NodeSecurity make_node_security(const NodeOptions& o,
+                                              const guidance_lcm::NodeConfig& cfg) {
+  guidance_lcm::NodeSecurity sec;
+  for (const std::string& f : o.key_files) auth::load_into(auth::read_key_file(f), &sec.keys);
+  if (sec.keys.size() > 0 && o.auth_state.empty()) {
+    throw std::invalid_argument(
+        "--keys needs --auth-state FILE: the anti-replay state must survive a restart "
+        "(docs/SECURITY.md AUTH-4)");
+  }
+  sec.state_path = o.auth_state;
+  if (!cfg.lockstep) {  // fixed rate: sensor ARSNs (the signer's CLOCK_REALTIME) after our start
+    timespec ts{};
+    (void)clock_gettime(CLOCK_REALTIME, &ts);  // CLOCK_REALTIME always exists: cannot fail
+    sec.sensor_arsn_floor_us = static_cast<std::int64_t>(ts.tv_sec) * 1000000 + ts.tv_nsec / 1000;
+  }
+  return sec;
 }
 
 }  // namespace evade::node

@@ -37,6 +37,10 @@ struct NodeOptions {
   bool start_disarmed = false;    ///< start disarmed (guidance.armed = false)
   bool stats_json = false;        ///< print the run's statistics as JSON on stdout at exit
   bool quiet = false;             ///< no progress on stderr
+  std::vector<std::string> key_files;  ///< --keys (repeatable): docs/SECURITY.md KEY-1
+  std::string auth_state;         ///< --auth-state: persisted key states and ARSNs (AUTH-4)
+  std::string auth_commands;      ///< --auth-commands required|off (plan and arm channels)
+  std::string auth_sensors;       ///< --auth-sensors required|off (nav, angles, sim clock)
   std::vector<ParamFlag> params = {
       {"--rate-hz", "guidance.rate_hz"},
       {"--stale-limit-s", "guidance.stale_limit_s"},
@@ -53,5 +57,9 @@ void note_given(const CLI::App& app, NodeOptions& o);
 /// Builds the node configuration. Throws config::ConfigError or std::invalid_argument with
 /// the key, the value and the allowed range.
 guidance_lcm::NodeConfig make_node_config(const NodeOptions& o);
+/// Loads --keys and --auth-state (docs/SECURITY.md KEY-1, AUTH-4). Throws std::runtime_error
+/// naming the file (never a key byte) or std::invalid_argument for a missing --auth-state.
+guidance_lcm::NodeSecurity make_node_security(const NodeOptions& o,
+                                              const guidance_lcm::NodeConfig& cfg);
 
 }  // namespace evade::node

@@ -29,7 +29,12 @@ std::int64_t publish_burn_plan(lcm_t* lcm, const std::string& channel, const Bur
   evade_burn_plan_t m{};
   guidance_lcm::to_lcm(plan, utime, seq, epoch, stamp.frame, &m);
   std::vector<std::uint8_t> buf(static_cast<std::size_t>(m.getEncodedSize()));
-  const int n = m.encode(buf.data(), 0, static_cast<int>(buf.size()));
+  guidance_lcm::ArsnClock clock;
+  const int n = stamp.key.id != 0
+                    ? guidance_lcm::encode_signed(&m, channel.c_str(), stamp.key,
+                                                  stamp.arsn != 0 ? stamp.arsn : clock.next(),
+                                                  buf.data(), static_cast<int>(buf.size()))
+                    : m.encode(buf.data(), 0, static_cast<int>(buf.size()));
   if (n < 0)
     throw std::runtime_error("LCM encode of evade_burn_plan_t for channel '" + channel +
                              "' failed");

@@ -34,13 +34,15 @@ std::int64_t clock_us(clockid_t clk) {
 
 class RealtimeLcmLink final : public sim::RealtimeLink {
  public:
-  explicit RealtimeLcmLink(const std::string& url)
+  RealtimeLcmLink(const std::string& url, const guidance_lcm::SigningKey& sensor_key)
       : url_(url),
         lcm_(lcm_create(url.empty() ? nullptr : url.c_str())),
         offset_us_(clock_us(CLOCK_REALTIME) - clock_us(CLOCK_MONOTONIC)) {
     if (lcm_ == nullptr) throw std::runtime_error("evade sim: cannot open LCM URL '" + url + "'");
-    nav_pub_ = std::make_unique<RawPublisher<evade_nav_state_t>>(lcm_, kChanNav);
-    ang_pub_ = std::make_unique<RawPublisher<evade_angles_t>>(lcm_, kChanAngles);
+    nav_pub_ = std::make_unique<SigningPublisher<evade_nav_state_t>>(lcm_, kChanNav);
+    ang_pub_ = std::make_unique<SigningPublisher<evade_angles_t>>(lcm_, kChanAngles);
+    nav_pub_->set_signing_key(sensor_key);
+    ang_pub_->set_signing_key(sensor_key);
     cmd_sub_ = lcm_subscribe(lcm_, kChanCmd, &RealtimeLcmLink::on_cmd, this);
     st_sub_ = lcm_subscribe(lcm_, kChanStatus, &RealtimeLcmLink::on_status, this);
     if (cmd_sub_ == nullptr || st_sub_ == nullptr)
@@ -129,8 +131,8 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
   std::string url_;
   lcm_t* lcm_;
   std::int64_t offset_us_;  // CLOCK_REALTIME − CLOCK_MONOTONIC at construction
-  std::unique_ptr<RawPublisher<evade_nav_state_t>> nav_pub_;
-  std::unique_ptr<RawPublisher<evade_angles_t>> ang_pub_;
+  std::unique_ptr<SigningPublisher<evade_nav_state_t>> nav_pub_;
+  std::unique_ptr<SigningPublisher<evade_angles_t>> ang_pub_;
   lcm_subscription_t* cmd_sub_ = nullptr;
   lcm_subscription_t* st_sub_ = nullptr;
   evade_nav_state_t nav_msg_{};
@@ -147,8 +149,9 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
 
 }  // namespace
 
-std::unique_ptr<sim::RealtimeLink> make_realtime_lcm_link(const std::string& lcm_url) {
-  return std::make_unique<RealtimeLcmLink>(lcm_url);
+std::unique_ptr<sim::RealtimeLink> make_realtime_lcm_link(const std::string& lcm_url,
+                                                          const guidance_lcm::SigningKey& sensor_key) {
+  return std::make_unique<RealtimeLcmLink>(lcm_url, sensor_key);
 }
 
 }  // namespace evade::lcm_link

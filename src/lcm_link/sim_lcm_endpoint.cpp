@@ -45,7 +45,8 @@ std::int64_t mono_us() {
 
 class LcmEndpoint final : public sim::GuidanceEndpoint {
  public:
-  LcmEndpoint(const std::string& url, bool lockstep, double timeout_s)
+  LcmEndpoint(const std::string& url, bool lockstep, double timeout_s,
+              const guidance_lcm::SigningKey& sensor_key)
       : url_(url),
         lcm_(lcm_create(url.empty() ? nullptr : url.c_str())),
         lockstep_(lockstep),
@@ -60,9 +61,12 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
                                     "': must be a number in (0, 1e6]");
       }
     }
-    nav_pub_ = std::make_unique<RawPublisher<evade_nav_state_t>>(lcm_, kChanNav);
-    ang_pub_ = std::make_unique<RawPublisher<evade_angles_t>>(lcm_, kChanAngles);
-    clk_pub_ = std::make_unique<RawPublisher<evade_sim_clock_t>>(lcm_, kChanClock);
+    nav_pub_ = std::make_unique<SigningPublisher<evade_nav_state_t>>(lcm_, kChanNav);
+    ang_pub_ = std::make_unique<SigningPublisher<evade_angles_t>>(lcm_, kChanAngles);
+    clk_pub_ = std::make_unique<SigningPublisher<evade_sim_clock_t>>(lcm_, kChanClock);
+    nav_pub_->set_signing_key(sensor_key);
+    ang_pub_->set_signing_key(sensor_key);
+    clk_pub_->set_signing_key(sensor_key);
     cmd_sub_ = lcm_subscribe(lcm_, kChanCmd, &LcmEndpoint::on_cmd, this);
     st_sub_ = lcm_subscribe(lcm_, kChanStatus, &LcmEndpoint::on_status, this);
     if (cmd_sub_ == nullptr || st_sub_ == nullptr) {
@@ -183,9 +187,9 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
   lcm_t* lcm_;
   bool lockstep_;
   std::int64_t timeout_us_;
-  std::unique_ptr<RawPublisher<evade_nav_state_t>> nav_pub_;
-  std::unique_ptr<RawPublisher<evade_angles_t>> ang_pub_;
-  std::unique_ptr<RawPublisher<evade_sim_clock_t>> clk_pub_;
+  std::unique_ptr<SigningPublisher<evade_nav_state_t>> nav_pub_;
+  std::unique_ptr<SigningPublisher<evade_angles_t>> ang_pub_;
+  std::unique_ptr<SigningPublisher<evade_sim_clock_t>> clk_pub_;
   lcm_subscription_t* cmd_sub_ = nullptr;
   lcm_subscription_t* st_sub_ = nullptr;
   evade_nav_state_t nav_msg_{};
@@ -209,11 +213,12 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
 
 }  // namespace
 
-std::unique_ptr<sim::GuidanceEndpoint> make_lcm_endpoint(const std::string& lcm_url,
-                                                         bool lockstep, double timeout_s) {
+std::unique_ptr<sim::GuidanceEndpoint> make_lcm_endpoint(
+    const std::string& lcm_url, bool lockstep, double timeout_s,
+    const guidance_lcm::SigningKey& sensor_key) {
   if (!(timeout_s > 0.0))
     throw std::invalid_argument("--lcm-timeout-s must be > 0");
-  return std::make_unique<LcmEndpoint>(lcm_url, lockstep, timeout_s);
+  return std::make_unique<LcmEndpoint>(lcm_url, lockstep, timeout_s, sensor_key);
 }
 
 }  // namespace evade::lcm_link

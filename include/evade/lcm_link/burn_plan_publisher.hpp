@@ -10,14 +10,18 @@
 
 #include "evade/core/burn_plan.hpp"
 #include "evade/guidance/plan_executor.hpp"
+#include "evade/guidance_lcm/signed_encode.hpp"
 
 namespace evade::lcm_link {
 
-/// Time stamps and frame of a published plan.
+/// Time stamps, frame and (optionally) the signing key of a published plan. One message, no
+/// acknowledgement: the acknowledged uplink is command_uplink.hpp's uplink_plan.
 struct PlanStamp {
   std::int64_t utime = 0;        ///< message utime [us]; 0: now (CLOCK_REALTIME)
   std::int64_t epoch_utime = 0;  ///< utime of the plan's t = 0 [us]; 0: the message utime
   guidance::PlanFrame frame = guidance::PlanFrame::kRsw;  ///< frame the node flies
+  guidance_lcm::SigningKey key{};  ///< id != 0: sign with this command key (docs/SECURITY.md)
+  std::int64_t arsn = 0;           ///< with key: the ARSN; 0: the sender's clock (ArsnClock)
 };
 
 /// Publishes plan on channel through lcm (an open LCM instance; memq:// delivers only within

@@ -13,12 +13,15 @@
 #include <memory>
 #include <string>
 
+#include "evade/guidance_lcm/signed_encode.hpp"
 #include "evade/sim/realtime_link.hpp"
 
 namespace evade::lcm_link {
 
-/// Opens lcm_url (empty: LCM's default). Throws std::runtime_error when LCM cannot be opened
+/// Opens lcm_url (empty: LCM's default). With a sensor key (id != 0) nav and angles are signed
+/// (docs/SECURITY.md AUTH-3). Throws std::runtime_error when LCM cannot be opened
 /// or subscribed; wait_for_command throws std::runtime_error on an LCM receive failure.
-std::unique_ptr<sim::RealtimeLink> make_realtime_lcm_link(const std::string& lcm_url);
+std::unique_ptr<sim::RealtimeLink> make_realtime_lcm_link(
+    const std::string& lcm_url, const guidance_lcm::SigningKey& sensor_key = {});
 
 }  // namespace evade::lcm_link

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "evade/guidance_lcm/signed_encode.hpp"
 #include "evade/sim/guidance_endpoint.hpp"
 
 namespace evade::lcm_link {
@@ -16,7 +17,9 @@ namespace evade::lcm_link {
 /// k*dt/F of wall time after the first (unset: unpaced). Throws std::invalid_argument on
 /// timeout_s <= 0 or a bad EVADE_SIM_LCM_REALTIME_FACTOR, std::runtime_error when LCM cannot
 /// be opened; exchange throws std::runtime_error on a timeout or an LCM failure.
-std::unique_ptr<sim::GuidanceEndpoint> make_lcm_endpoint(const std::string& lcm_url,
-                                                         bool lockstep, double timeout_s);
+/// With a sensor key (id != 0) nav, angles and the sim clock are signed (docs/SECURITY.md AUTH-3).
+std::unique_ptr<sim::GuidanceEndpoint> make_lcm_endpoint(
+    const std::string& lcm_url, bool lockstep, double timeout_s,
+    const guidance_lcm::SigningKey& sensor_key = {});
 
 }  // namespace evade::lcm_link

@@ -1,0 +1,46 @@
+// Shared flags and report of the signed ground commands (uplink_options.hpp).
+#include "uplink_options.hpp"
+
+#include <cstdio>
+
+#include "cli.hpp"
+#include "plan_output.hpp"
+
+namespace evade::cli {
+
+void add_uplink_flags(CLI::App& app, UplinkFlags& f) {
+  app.add_option("--key", f.key_file, "command key file (`evade keygen`) to sign with")->required();
+  app.add_option("--key-id", f.key_id, "INTEGER: which key of --key (default: its only command key)")
+      ->check(CLI::Range(1, 2147483647));
+  app.add_option("--lcm-url", f.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
+  app.add_option("--ack-timeout-s", f.ack_timeout_s,
+                 "NUMBER [s]: give up waiting for the node's acknowledgement after this long")
+      ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
+  app.add_option("--retransmit-s", f.retransmit_s,
+                 "NUMBER [s]: send again (signed afresh) after this long without an acknowledgement")
+      ->check(CLI::Range(0.001, 60.0))->capture_default_str();
+  app.add_flag("--json", f.json, "machine-readable result");
+}
+
+lcm_link::UplinkOptions uplink_options(const UplinkFlags& f) {
+  lcm_link::UplinkOptions u;
+  u.lcm_url = f.lcm_url;
+  u.timeout_s = f.ack_timeout_s;
+  u.retransmit_s = f.retransmit_s;
+  return u;
+}
+
+int report_uplink(const char* what, const lcm_link::UplinkResult& r, std::int32_t key_id, bool json) {
+  if (json) {
+    nlohmann::json j = uplink_json(r, key_id);
+    j["command"] = what;
+    print_json(j);
+  } else {
+    (void)std::printf("%s: %s (%s) after %d transmission(s)%s\n", what,
+                      lcm_link::outcome_name(r.outcome), r.reason.c_str(), r.transmissions,
+                      r.outcome == lcm_link::AckOutcome::kTimeout ? "" : ", acknowledged");
+  }
+  return lcm_link::exit_code(r);
+}
+
+}  // namespace evade::cli
