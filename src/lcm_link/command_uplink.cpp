@@ -82,8 +82,10 @@ UplinkResult run_uplink(const UplinkOptions& o, const Transmit& transmit, const 
   r.first_utime = realtime_us();
   const double t0 = mono_s();
   double next_send = t0;
-  for (double now = t0; now - t0 < o.timeout_s; now = mono_s()) {
-    if (now >= next_send) {
+  // Bounded: each pass waits for a status or until the next transmission, and the loop ends at
+  // the timeout (or at the first acknowledgement).
+  while (mono_s() - t0 < o.timeout_s) {
+    if (mono_s() >= next_send) {
       if (!transmit(lcm.get())) throw std::runtime_error("LCM refused to send the command");
       ++r.transmissions;
       next_send += o.retransmit_s;
