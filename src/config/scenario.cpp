@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <yaml-cpp/yaml.h>
 
@@ -182,16 +183,32 @@ std::string fmt(double v) {
   return buf;
 }
 
+// The folder of the running executable (/proc/self/exe), "" when it cannot be read.
+std::string executable_dir() {
+  char buf[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof(buf) - 1);
+  if (n <= 0) return std::string();
+  buf[n] = '\0';
+  std::string p(buf);
+  const std::size_t slash = p.rfind('/');
+  return slash == std::string::npos ? std::string() : p.substr(0, slash);
+}
+
 }  // namespace
 
 std::vector<std::string> scenario_search_dirs() {
   std::vector<std::string> dirs;
   if (const char* env = std::getenv("EVADE_SCENARIO_DIR"); env && *env) dirs.emplace_back(env);
+  // An installed executable (<prefix>/bin/evade) finds <prefix>/share/evade/scenarios, wherever
+  // the prefix was moved after the build; a build-tree executable has no such folder beside it.
+  const std::string exe_dir = executable_dir();
+  if (!exe_dir.empty()) {
+    const std::string installed = exe_dir + "/../" + EVADE_INSTALL_SCENARIO_REL_DIR;
+    struct stat st {};
+    if (::stat(installed.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) dirs.push_back(installed);
+  }
 #ifdef EVADE_SOURCE_SCENARIO_DIR
   dirs.emplace_back(EVADE_SOURCE_SCENARIO_DIR);
-#endif
-#ifdef EVADE_INSTALL_SCENARIO_DIR
-  dirs.emplace_back(EVADE_INSTALL_SCENARIO_DIR);
 #endif
   return dirs;
 }

@@ -31,8 +31,9 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Directories searched for a scenario given by name: $EVADE_SCENARIO_DIR, the source
-/// tree's scenarios/ and the install tree's share/evade/scenarios.
+/// Directories searched for a scenario given by name: $EVADE_SCENARIO_DIR, then (for an
+/// installed executable) <prefix>/share/evade/scenarios beside its bin/, then the source
+/// tree's scenarios/ (for the build tree's executables).
 std::vector<std::string> scenario_search_dirs();
 
 class Scenario {
