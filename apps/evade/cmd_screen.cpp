@@ -50,7 +50,47 @@ struct Options {
   int threads = 0;  // 0: hardware concurrency
   bool quiet = false;
   CatalogScreenOptions catalog;  ///< --tle/--omm path (its .cdm: --cdm-out, both paths)
+  /// The flags as parsed (owned by the command's CLI::App, alive while the command runs):
+  /// which were given, to refuse one that does not apply to the mode.
+  std::vector<std::pair<std::string, const CLI::Option*>> flags;
 };
+
+bool given(const Options& o, const std::string& flag) {
+  for (const auto& f : o.flags) {
+    if (f.first == flag) return f.second->count() > 0;
+  }
+  return false;
+}
+
+// No flag is silently ignored: one that does not apply to the mode it is given in is refused
+// (exit 2), naming the flag and the mode.
+void refuse_inapplicable(const Options& o) {
+  const bool catalog = !o.catalog.tle_path.empty() || !o.catalog.omm_path.empty();
+  const std::vector<const char*> catalog_only = {"--primary", "--span-s", "--threshold-m",
+                                                 "--step-s", "--start"};
+  const std::vector<const char*> objects_only = {"--population", "--objects", "--seed",
+                                                 "--trace", "--csv"};
+  for (const char* f : catalog ? objects_only : catalog_only) {
+    if (!given(o, f)) continue;
+    throw std::invalid_argument(
+        std::string(f) + ": does not apply to " +
+        (catalog ? "a catalog screen (--tle/--omm): it applies to a screen of scenario, "
+                   "--objects or --population objects"
+                 : "a screen of scenario, --objects or --population objects: it applies only "
+                   "with --tle/--omm (set the span and threshold with --set span_s=..., "
+                   "--set robust.threshold_m=...)"));
+  }
+  if (catalog && o.method != "robust") {
+    throw std::invalid_argument("--method: does not apply to a catalog screen (--tle/--omm) except "
+                                "as robust, its only method");
+  }
+  if (!catalog && given(o, "--seed") && !given(o, "--population")) {
+    throw std::invalid_argument("--seed: applies only with --population (the seed of the synthetic population)");
+  }
+  if (!catalog && o.method == "paper" && given(o, "--threads")) {
+    throw std::invalid_argument("--threads: does not apply to --method paper (one thread)");
+  }
+}
 
 std::string utc_of(double epoch_j2000_s, double t_s) {
   return format_calendar_utc(calendar_from_seconds_since_j2000(epoch_j2000_s + t_s));
@@ -204,7 +244,6 @@ int run_catalog(const Options& o) {
   if (!o.common.sets.empty()) throw std::invalid_argument("--set applies to the scenario, not to --tle/--omm");
   if (o.population > 0 || !o.objects_csv.empty())
     throw std::invalid_argument("--tle/--omm: not with --population or --objects");
-  if (o.method != "robust") throw std::invalid_argument("--tle/--omm: only with --method robust");
   CatalogScreenOptions c = o.catalog;
   c.threads = o.threads;
   c.json = o.common.json;
@@ -214,6 +253,7 @@ int run_catalog(const Options& o) {
 }
 
 int run(const Options& o) {
+  refuse_inapplicable(o);
   if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) return run_catalog(o);
   const config::Scenario sc = load_scenario(o.common);
   const ScreenScenario in = read_screen_scenario(sc);
@@ -263,23 +303,28 @@ Runner setup(CLI::App& app) {
   app.add_flag("--trace", o->trace, "record every sample of the paper method (Table 2 rows)");
   app.add_option("--csv", o->csv_path, "also write the events to this CSV file");
   app.add_option("--objects", o->objects_csv, "read the objects from a CSV file");
-  app.add_option("--population", o->population, "screen a synthetic LEO population of N objects")
+  app.add_option("--population", o->population, "screen a synthetic LEO population of N objects [-]")
       ->check(CLI::Range(2L, 10000000L));
-  app.add_option("--seed", o->seed, "seed of the synthetic population")->capture_default_str();
-  app.add_option("--threads", o->threads, "worker threads (default: all cores)")
+  app.add_option("--seed", o->seed, "seed of the synthetic population [-]")->capture_default_str();
+  app.add_option("--threads", o->threads, "worker threads [-] (default: all cores)")
       ->check(CLI::Range(1, 256));
   app.add_flag("--quiet", o->quiet, "no progress on stderr");
   CatalogScreenOptions& c = o->catalog;
   auto* tle = app.add_option("--tle", c.tle_path, "TLE/3LE file: screen the catalog with SGP4 motion");
   auto* omm = app.add_option("--omm", c.omm_path, "CCSDS OMM (KVN or XML) or GP JSON/CSV file, as --tle");
   tle->excludes(omm);
-  app.add_option("--primary", c.primary_norad, "with --tle/--omm: screen this NORAD id against the catalog");
-  app.add_option("--span-s", c.span_s, "with --tle/--omm: span from the start (s)")->capture_default_str();
-  app.add_option("--threshold-m", c.threshold_m, "with --tle/--omm: report misses <= D (m)")
+  app.add_option("--primary", c.primary_norad, "with --tle/--omm: screen this NORAD id against the catalog [-]");
+  app.add_option("--span-s", c.span_s, "with --tle/--omm: span from the start [s]")->capture_default_str();
+  app.add_option("--threshold-m", c.threshold_m, "with --tle/--omm: report misses <= D [m]")
       ->capture_default_str();
-  app.add_option("--step-s", c.step_s, "with --tle/--omm: grid step (s; 0 = automatic)");
+  app.add_option("--step-s", c.step_s, "with --tle/--omm: grid step [s] (0 = automatic)");
   app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
   add_cdm_out_options(app, c.cdm);
+  for (const char* f : {"--primary", "--span-s", "--threshold-m", "--step-s", "--start",
+                        "--population", "--objects", "--seed", "--trace", "--csv", "--method",
+                        "--threads"}) {
+    o->flags.emplace_back(f, app.get_option(f));
+  }
   return [o]() { return run(*o); };
 }
 
