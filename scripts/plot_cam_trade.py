@@ -12,10 +12,14 @@ lead) are left out and counted on stderr.
 import csv
 import sys
 
-import matplotlib
+try:
+    import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: E402
+except ImportError as e:  # one line, never a traceback
+    sys.stderr.write(f"plot_cam_trade.py: matplotlib is not available ({e}); scripts/setup installs python3-matplotlib\n")
+    sys.exit(1)
 
 
 def load(path):
@@ -63,4 +67,8 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except Exception as e:  # noqa: BLE001 - one line for the CLI to report, never a traceback
+        sys.stderr.write(f"plot_cam_trade.py: {type(e).__name__}: {e}\n")
+        sys.exit(1)

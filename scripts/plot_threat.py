@@ -7,10 +7,14 @@ Usage: plot_threat.py RESULT.json OUT.png   (RESULT.json: the command's --json o
 import json
 import sys
 
-import matplotlib
+try:
+    import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: E402
+except ImportError as e:  # one line, never a traceback
+    sys.stderr.write(f"plot_threat.py: matplotlib is not available ({e}); scripts/setup installs python3-matplotlib\n")
+    sys.exit(1)
 
 PAPER_ELIMINATING_MPS = 161.698
 
@@ -59,4 +63,8 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        sys.exit(main())
+    except Exception as e:  # noqa: BLE001 - one line for the CLI to report, never a traceback
+        sys.stderr.write(f"plot_threat.py: {type(e).__name__}: {e}\n")
+        sys.exit(1)

@@ -222,22 +222,12 @@ ThreatStudyProgress stderr_progress() {
   return p;
 }
 
-std::string find_plot_script() {
-  if (const char* env = std::getenv("EVADE_SCRIPT_DIR"); env && *env) {
-    return std::string(env) + "/plot_threat.py";
-  }
-  for (const auto& d : config::scenario_search_dirs()) {
-    std::string p = d + "/../scripts/plot_threat.py";  // not const: returned by move
-    if (std::ifstream(p).good()) return p;
-  }
-  return "scripts/plot_threat.py";
-}
-
 // Writes the JSON beside the PNG and runs scripts/plot_threat.py on it; false on failure.
 bool write_plot(const std::string& png, const nlohmann::json& j) {
   const std::string tmp = png + ".json";
   std::ofstream(tmp) << j.dump(2) << "\n";
-  const std::vector<std::string> argv = {"python3", find_plot_script(), tmp, png};
+  const std::vector<std::string> argv = {python_interpreter(), plot_script("plot_threat.py"), tmp,
+                                         png};
   if (run_program(argv, false) != 0) {
     (void)std::fprintf(stderr, "threat-area: plot failed: %s\n", command_line(argv).c_str());
     return false;
@@ -295,8 +285,8 @@ Runner setup(CLI::App& app) {
   add_common_options(app, o->common);
   o->dv_opt = app.add_option("--dv", o->dv_mps, "evasion burn magnitude V_E [m/s]");
   o->dt_opt = app.add_option("--dt-transfer", o->dt_transfer_s, "chaser transfer time [s]");
-  o->imp_opt = app.add_option("--impulses", o->impulses, "chaser impulses N (2..4)");
-  o->seed_opt = app.add_option("--seed", o->seed, "seed: ISRES RNG / the sweep's sample position in each cell");
+  o->imp_opt = app.add_option("--impulses", o->impulses, "chaser impulses N (2..4) [-]");
+  o->seed_opt = app.add_option("--seed", o->seed, "seed: ISRES RNG / the sweep's sample position in each cell [-]");
   app.add_flag("--eliminate", o->eliminate, "find the smallest V_E with no threat area");
   app.add_option("--sweep-dv", o->sweep_dv, "list of V_E [m/s]: arc for each (Fig. 8)")
       ->delimiter(',');

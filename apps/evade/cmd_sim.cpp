@@ -105,10 +105,11 @@ sim::SimOverrides parse_overrides(const SimOptions& o) {
 }
 
 void check_plan_options(const SimOptions& o) {
-  if (!o.plan.plan_file.empty() && (!o.lcm_url.empty() || o.runs > 0 || !o.csv.empty())) {
+  if (!o.plan.plan_file.empty() &&
+      (!o.lcm_url.empty() || o.runs > 0 || !o.csv.empty() || !o.plot.empty())) {
     throw std::invalid_argument("--plan runs the plan in process and cannot be combined with "
-                                "--lcm, --runs or --csv (to fly a plan on the node, publish "
-                                "it with `evade plan ... --publish`)");
+                                "--lcm, --runs, --csv or --plot (to fly a plan on the node, "
+                                "publish it with `evade plan ... --publish`)");
   }
 }
 
@@ -132,9 +133,6 @@ void check_run_options(const SimOptions& o) {
   if (!o.key_file.empty() && o.lcm_url.empty()) {
     throw std::invalid_argument("--key needs --lcm URL (it signs the messages sent to the node)");
   }
-  if (!o.plot.empty() && o.csv.empty()) {
-    throw std::invalid_argument("--plot needs --csv FILE (the plot is drawn from the CSV)");
-  }
 }
 
 // --key: the sensor key that signs nav, angles and the sim clock (docs/SECURITY.md AUTH-3).
@@ -151,11 +149,21 @@ std::unique_ptr<sim::GuidanceEndpoint> make_endpoint(const SimOptions& o,
   return sim::make_in_process_endpoint(cfg.guidance, cfg.guidance.armed);
 }
 
+// The time history's file: --csv, or with --plot alone PNG.csv beside the plot.
+std::string csv_file(const SimOptions& o) {
+  if (!o.csv.empty()) return o.csv;
+  return o.plot.empty() ? std::string() : o.plot + ".csv";
+}
+
 // --csv: the file opened with its header (closed when csv goes out of scope).
 sim::SampleCallback csv_writer(const SimOptions& o, std::ofstream& csv) {
-  if (o.csv.empty()) return {};
-  csv.open(o.csv);
-  if (!csv) throw std::invalid_argument("--csv = " + o.csv + ": cannot open for writing");
+  const std::string path = csv_file(o);
+  if (path.empty()) return {};
+  csv.open(path);
+  if (!csv) {
+    throw std::invalid_argument((o.csv.empty() ? "--plot: the time history " : "--csv = ") + path +
+                                ": cannot open for writing");
+  }
   csv << sim::sim_csv_header() << '\n';
   return [&csv](const sim::SimSample& s) { sim::write_sim_csv_row(csv, s); };
 }
@@ -259,24 +267,11 @@ bool add_monte_carlo(const SimOptions& o, const sim::SimConfig& cfg, nlohmann::j
   return true;
 }
 
-std::string script_path(const char* name) {
-  // $EVADE_SCRIPT_DIR, then <scenario dir>/../scripts for every scenario search dir (source
-  // tree: scenarios/ -> scripts/; install tree: share/evade/scenarios -> share/evade/scripts).
-  std::vector<std::string> dirs;
-  if (const char* env = std::getenv("EVADE_SCRIPT_DIR")) dirs.emplace_back(env);
-  for (const std::string& d : config::scenario_search_dirs()) dirs.push_back(d + "/../scripts");
-  for (const std::string& dir : dirs) {
-    std::string p = dir + "/" + name;  // not const: returned by move
-    if (std::ifstream(p).good()) return p;
-  }
-  throw std::runtime_error(std::string("scripts/") + name + " not found");
-}
-
 // --plot: scripts/plot_sim.py draws the CSV (its stdout to stderr). Returns false (message on
 // stderr) on failure.
 bool draw_plot(const SimOptions& o) {
-  const std::vector<std::string> argv = {"/usr/bin/python3", script_path("plot_sim.py"), o.csv,
-                                         o.plot};
+  const std::vector<std::string> argv = {cli::python_interpreter(), cli::plot_script("plot_sim.py"),
+                                         csv_file(o), o.plot};
   if (cli::run_program(argv, true) != 0) {
     (void)std::fprintf(stderr, "evade sim: plot failed (%s)\n", cli::command_line(argv).c_str());
     return false;
@@ -357,11 +352,13 @@ evade::cli::Runner setup(CLI::App& app) {
   app.add_option("--rate-noise-radps", o->rate_noise_radps,
                  "sensor angle-rate noise 1-sigma [rad/s]");
   app.add_flag("--no-rates", o->no_rates, "angles only (the filter estimates the rates)");
-  app.add_option("--runs", o->runs, "Monte Carlo runs (adds miss_m_p5/p50/p95)");
-  app.add_option("--seed", o->seed, "Monte Carlo seed");
-  app.add_option("--threads", o->threads, "Monte Carlo threads")->capture_default_str();
+  app.add_option("--runs", o->runs, "Monte Carlo runs [-] (adds miss_m_p5/p50/p95)");
+  app.add_option("--seed", o->seed, "Monte Carlo seed [-]");
+  app.add_option("--threads", o->threads, "Monte Carlo threads [-]")->capture_default_str();
   app.add_option("--csv", o->csv, "write the time history (truth, estimates, commands)");
-  app.add_option("--plot", o->plot, "draw the CSV with scripts/plot_sim.py into this PNG");
+  app.add_option("--plot", o->plot,
+                 "draw the time history into this PNG (scripts/plot_sim.py; the CSV is --csv, "
+                 "or PNG.csv beside it)");
   app.add_option("--lcm", o->lcm_url,
                  "run the guidance in evade_guidance_node over LCM at this URL");
   app.add_option("--lcm-lockstep", o->lockstep, "wait for the node's command every cycle")
@@ -374,7 +371,7 @@ evade::cli::Runner setup(CLI::App& app) {
   app.add_option("--key", o->key_file,
                  "with --lcm: sign nav, angles and the sim clock with this sensor key file "
                  "(`evade keygen --role sensor`; docs/SECURITY.md)");
-  app.add_option("--key-id", o->key_id, "which sensor key of --key (default: its only one)")
+  app.add_option("--key-id", o->key_id, "which sensor key of --key [-] (default: its only one)")
       ->check(CLI::Range(1, 2147483647));
   app.add_option("--plan", o->plan.plan_file,
                  "fly this burn-plan file (`evade plan ... --plan-out`) with the in-process "

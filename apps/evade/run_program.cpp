@@ -7,6 +7,11 @@
 #include <unistd.h>  // environ (g++ defines _GNU_SOURCE)
 
 #include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+#include "evade/config/scenario.hpp"
 
 namespace evade::cli {
 
@@ -42,6 +47,25 @@ std::string command_line(const std::vector<std::string>& argv) {
   std::string s;
   for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
   return s;
+}
+
+std::string python_interpreter() {
+  return ::access("/usr/bin/python3", X_OK) == 0 ? "/usr/bin/python3" : "python3";
+}
+
+std::string plot_script(const std::string& name) {
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("EVADE_SCRIPT_DIR"); env != nullptr && *env != '\0') {
+    dirs.emplace_back(env);
+  }
+  for (const std::string& d : config::scenario_search_dirs()) dirs.push_back(d + "/../scripts");
+  std::string searched;
+  for (const std::string& dir : dirs) {
+    std::string p = dir + "/" + name;  // not const: returned by move
+    if (std::ifstream(p).good()) return p;
+    searched += (searched.empty() ? "" : ", ") + dir;
+  }
+  throw std::runtime_error("plot script " + name + " not found (searched: " + searched + ")");
 }
 
 }  // namespace evade::cli

@@ -16,4 +16,13 @@ int run_program(const std::vector<std::string>& argv, bool stdout_to_stderr);
 /// argv joined by spaces, for messages.
 std::string command_line(const std::vector<std::string>& argv);
 
+/// The one interpreter of the plot scripts: /usr/bin/python3 (where scripts/setup installs
+/// matplotlib) when it exists, else python3 from PATH.
+std::string python_interpreter();
+
+/// The plot script `name` (e.g. "plot_sim.py"): $EVADE_SCRIPT_DIR, then <dir>/../scripts of
+/// every scenario search directory (the source tree's scripts/; an installed tree's
+/// <prefix>/share/evade/scripts). Throws std::runtime_error naming what was searched.
+std::string plot_script(const std::string& name);
+
 }  // namespace evade::cli
