@@ -407,5 +407,86 @@ TEST(NodeAuth, VerificationBudgetBoundsTheWorkOfAFlood) {
   expect_accounted(rig);
 }
 
+// AUTH-2 with the arm channel's policy off (a bench without keys): arms are admitted through the
+// seq and utime rules of every input; with it on, a stale or future arm is refused too.
+TEST(NodeAuth, ArmWithThePolicyOffUsesTheSeqRulesAndStaleArmsAreRefused) {
+  NodeConfig cfg;
+  cfg.auth.arm_required = false;
+  Rig rig(cfg);
+  evade_arm_t arm{};
+  arm.utime = kT0;
+  arm.seq = 5;
+  arm.armed = 0;
+  rig.pub.set_signing(false);
+  rig.pub.send(kChanArm, arm);
+  nav_cycle(rig, 0);
+  EXPECT_FALSE(rig.node.armed());
+  rig.pub.send(kChanArm, arm);  // the same seq again: stale, not used
+  arm.armed = 1;
+  rig.pub.send(kChanArm, arm);
+  nav_cycle(rig, 1);
+  EXPECT_FALSE(rig.node.armed());
+  EXPECT_EQ(reason(rig, Reason::kDuplicateSeq), 2);
+  rig.pub.set_signing(true);
+  expect_accounted(rig);
+
+  Rig on;  // policy on: a signed arm from the future and a stale one
+  arm.utime = kT0 + 10'000'000;
+  on.pub.send(kChanArm, arm);
+  arm.utime = kT0 - 10'000'000;
+  on.pub.send(kChanArm, arm);
+  nav_cycle(on, 0);
+  EXPECT_EQ(reason(on, Reason::kFromFuture), 1);
+  EXPECT_EQ(reason(on, Reason::kStaleUtime), 1);
+  expect_accounted(on);
+}
+
+// KEY-2: a key command with an unknown op, one from the future, one naming a key that is not
+// loaded, oversize bytes on a command channel; persisting with nothing to write is a no-op.
+TEST(NodeAuth, MalformedKeyCommandsAreRefusedAndCounted) {
+  Rig rig;
+  evade_key_cmd_t kc{};
+  kc.utime = kT0;
+  kc.seq = 1;
+  kc.op = 9;
+  kc.key_id = 1;
+  rig.pub.send(kChanKeyCmd, kc);
+  nav_cycle(rig, 0);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_result, S::KEY_CMD_BAD_OP);
+  kc.seq = 2;
+  kc.op = evade_key_cmd_t::OP_ACTIVATE;
+  kc.key_id = 42;
+  rig.pub.send(kChanKeyCmd, kc);
+  nav_cycle(rig, 1);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_seq, 2);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_result, S::KEY_CMD_UNKNOWN_KEY);
+  kc.seq = 3;
+  kc.utime = kT0 + 10'000'000;
+  rig.pub.send(kChanKeyCmd, kc);
+  nav_cycle(rig, 2);
+  EXPECT_EQ(reason(rig, Reason::kFromFuture), 1);
+  EXPECT_EQ(rig.node.last_status().key_cmd_last_seq, 2);
+  const std::vector<std::uint8_t> big(kMaxCommandBytes + 1, 0x11);
+  rig.pub.send_bytes(kChanKeyCmd, big.data(), static_cast<unsigned>(big.size()));
+  nav_cycle(rig, 3);
+  EXPECT_EQ(reason(rig, Reason::kOversize), 1);
+  EXPECT_EQ(rig.node.persist_auth_state(), 0);  // memory only: nothing to write
+  expect_accounted(rig);
+}
+
+// Undecodable bytes that pass authentication (signed by the ground, but not a command of the
+// channel's type) are refused at decode on every command channel.
+TEST(NodeAuth, SignedBytesThatAreNotTheChannelsTypeFailToDecode) {
+  Rig rig;
+  evade_nav_state_t nav{};
+  rig.enc.nav_at(kT0, &nav);
+  send(rig, kChanPlan, signed_bytes(nav, kChanPlan, test_command_key(), 10));
+  send(rig, kChanArm, signed_bytes(nav, kChanArm, test_command_key(), 11));
+  send(rig, kChanKeyCmd, signed_bytes(nav, kChanKeyCmd, test_command_key(), 12));
+  nav_cycle(rig, 0);
+  EXPECT_EQ(reason(rig, Reason::kDecodeFailed), 3);
+  expect_accounted(rig);
+}
+
 }  // namespace
 }  // namespace evade::guidance_lcm::test
