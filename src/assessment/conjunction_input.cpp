@@ -73,7 +73,11 @@ ConjunctionInput conjunction_from_cdm(const Cdm& cdm, double hbr_m, const EarthM
   ConjunctionInput in;
   in.earth = earth;
   in.hbr_m = hbr_m;
-  if (!(hbr_m > 0.0)) {
+  if (hbr_m != 0.0 && !(std::isfinite(hbr_m) && hbr_m > 0.0)) {  // 0: not given
+    throw std::invalid_argument("--hbr-m = " + std::to_string(hbr_m) +
+                                ": the hard-body radius must be a finite number > 0 [m]");
+  }
+  if (hbr_m == 0.0) {
     const std::string a1 = cdm_value(cdm.object[0].additional_parameters, "AREA_PC");
     const std::string a2 = cdm_value(cdm.object[1].additional_parameters, "AREA_PC");
     if (a1.empty() || a2.empty()) {

@@ -132,6 +132,11 @@ double pc_chan(const PrincipalEncounter& e, double hbr_m) {
   const double u2 = 0.5 * hbr_m * hbr_m / (e.sigma_x_m * e.sigma_y_m);
   const double v2 = 0.5 * (e.miss_x_m * e.miss_x_m / (e.sigma_x_m * e.sigma_x_m) +
                            e.miss_y_m * e.miss_y_m / (e.sigma_y_m * e.sigma_y_m));
+  // A miss beyond ~1.3e154 sigma squares to infinity: every Poisson weight e^-v v^m / m! is 0
+  // (the series would otherwise form inf - inf = NaN, which std::min turned into 1.0).
+  if (std::isinf(v2)) return 0.0;
+  // A hard-body radius beyond ~1.3e154 sigma: the disc holds the whole density.
+  if (std::isinf(u2)) return 1.0;
   // Poisson upper tail P(K > m), K ~ Poisson(u/2), summed term by term (no cancellation).
   auto upper_tail = [u2](int m) {
     double term = std::exp(-u2 + (m + 1) * std::log(u2) - std::lgamma(m + 2.0));
@@ -151,6 +156,7 @@ double pc_chan(const PrincipalEncounter& e, double hbr_m) {
     if (m > v2 && term < 1e-17 * sum) break;
     if (v2 == 0.0) break;
   }
+  if (!std::isfinite(sum)) throw std::domain_error("pc_chan: the series did not converge");
   return std::min(1.0, sum);
 }
 
