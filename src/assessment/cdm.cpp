@@ -144,6 +144,63 @@ std::string upper(std::string s) {
   return s;
 }
 
+// A unit expression as base units with integer exponents ("M**3/(KG*S)" and "M**3/KG/S" and
+// "M**3*KG**-1*S**-1" all give {M: 3, KG: -1, S: -1}); false when it is not one (the spellings
+// CCSDS 508.0-B-1 and other implementations write: factors joined by '*' and '/', '**n'
+// exponents, one level of parentheses after '/').
+bool unit_exponents(const std::string& unit, std::map<std::string, int>* out) {
+  std::map<std::string, int> ex;
+  int sign = 1;          // the next factor's sign: -1 after '/'
+  int group_sign = 1;    // the sign of the parenthesized group being read
+  std::size_t i = 0;
+  const std::string u = upper(unit);
+  while (i < u.size()) {
+    const char c = u[i];
+    if (c == '/' || c == '*') {
+      if (c == '/') sign = -1;
+      ++i;
+      continue;
+    }
+    if (c == '(') {
+      if (group_sign != 1) return false;  // one level only
+      group_sign = sign;
+      sign = 1;
+      ++i;
+      continue;
+    }
+    if (c == ')') {
+      group_sign = 1;
+      sign = 1;
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < u.size() && (std::isalpha(static_cast<unsigned char>(u[j])) != 0 || u[j] == '%')) ++j;
+    if (j == i) return false;
+    const std::string base = u.substr(i, j - i);
+    int power = 1;
+    if (u.compare(j, 2, "**") == 0) {
+      char* end = nullptr;
+      const long p = std::strtol(u.c_str() + j + 2, &end, 10);
+      if (end == u.c_str() + j + 2 || p < -9 || p > 9) return false;
+      power = static_cast<int>(p);
+      j = static_cast<std::size_t>(end - u.c_str());
+    }
+    ex[base] += sign * group_sign * power;
+    if (group_sign == 1) sign = 1;  // outside a group '/' applies to one factor
+    i = j;
+  }
+  for (auto it = ex.begin(); it != ex.end();) it = it->second == 0 ? ex.erase(it) : std::next(it);
+  *out = std::move(ex);
+  return true;
+}
+
+bool same_unit(const std::string& a, const std::string& b) {
+  if (upper(a) == upper(b)) return true;
+  std::map<std::string, int> ea, eb;
+  return unit_exponents(a, &ea) && unit_exponents(b, &eb) && ea == eb;
+}
+
 void check_item(const CdmItem& it, CdmSectionId id) {
   if (it.key == "COMMENT") return;
   if (it.value.empty()) fail(it, "expected a value, found none");
@@ -161,7 +218,7 @@ void check_item(const CdmItem& it, CdmSectionId id) {
     }
   }
   const std::string unit = cdm_keyword_unit(it.key);
-  if (!it.unit.empty() && upper(it.unit) != upper(unit))
+  if (!it.unit.empty() && !same_unit(it.unit, unit))
     fail(it, "expected unit [" + (unit.empty() ? std::string("none") : unit) + "], found [" +
                  it.unit + "]");
   const auto e = enum_values().find(it.key);
@@ -305,6 +362,27 @@ void validate_cdm(const Cdm& c) {
     const std::string want = i == 0 ? "OBJECT1" : "OBJECT2";
     if (upper(obj->value) != want) fail(*obj, "expected " + want + ", found '" + obj->value + "'");
   }
+}
+
+std::vector<std::string> cdm_unit_notes(const Cdm& c) {
+  std::vector<std::string> notes;
+  auto scan = [&notes](const CdmSection& s) {
+    for (const CdmItem& it : s.items) {
+      const std::string unit = cdm_keyword_unit(it.key);
+      if (it.unit.empty() || upper(it.unit) == upper(unit)) continue;
+      notes.push_back("keyword '" + it.key + "' (line " + std::to_string(it.line) + "): unit [" +
+                      it.unit + "] read as the standard's equivalent [" + unit + "]");
+    }
+  };
+  scan(c.header);
+  scan(c.relative);
+  for (const CdmObject& o : c.object) {
+    for (const CdmSection* s : {&o.metadata, &o.od_parameters, &o.additional_parameters,
+                                &o.state_vector, &o.covariance}) {
+      scan(*s);
+    }
+  }
+  return notes;
 }
 
 std::string cdm_value(const CdmSection& s, const std::string& key) {

@@ -96,6 +96,25 @@ TEST(Cdm, TenMalformedMessagesNameKeywordAndLine) {
   }
 }
 
+// Units spelled as other implementations write them (Orekit: m**2/s/s, m**3/kg/s) are the
+// standard's units: accepted, each listed by cdm_unit_notes; a different unit is still refused.
+TEST(Cdm, EquivalentUnitSpellingsAreAcceptedAndNoted) {
+  std::string text = edit(shipped(), "CRDOT_RDOT",
+                          "CRDOT_RDOT = 3.761358714147070e-05 [m**2/s/s]");
+  text = edit(text, "CRDOT_R ", "CRDOT_R = 2.675448519614438e-02 [m**2*s**-1]");
+  const Cdm c = read_cdm_kvn(text);
+  const std::vector<std::string> notes = cdm_unit_notes(c);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_NE(notes[0].find("CRDOT_R"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[1].find("[m**2/s/s] read as the standard's equivalent [m**2/s**2]"),
+            std::string::npos)
+      << notes[1];
+  EXPECT_EQ(cdm_cov_rtn(c, 0), cdm_cov_rtn(read_cdm_kvn(shipped()), 0));
+  EXPECT_THROW(read_cdm_kvn(edit(shipped(), "CRDOT_RDOT", "CRDOT_RDOT = 3.7e-05 [m**2/s]")),
+               CdmError);
+  EXPECT_TRUE(cdm_unit_notes(read_cdm_kvn(shipped())).empty());
+}
+
 TEST(Cdm, MalformedXmlNamesElementAndLine) {
   std::string xml = write_cdm_xml(read_cdm_kvn(shipped()));
   const auto p = xml.find("<X units=\"km\">153.446765</X>");

@@ -65,8 +65,12 @@ std::string cdm_keyword_unit(const std::string& key);
 /// Keywords of a section in the standard's order.
 const std::vector<std::string>& cdm_section_keywords(CdmSectionId id);
 
-/// Throws CdmError naming the keyword and line of the first problem.
+/// Throws CdmError naming the keyword and line of the first problem. A unit spelled
+/// differently from the standard but equal to it (m**3/kg/s for m**3/(kg*s), the spelling of
+/// other implementations) is accepted: cdm_unit_notes lists each such item.
 void validate_cdm(const Cdm& cdm);
+/// One note per item whose unit is an equivalent spelling of the standard's (validated CDMs).
+std::vector<std::string> cdm_unit_notes(const Cdm& cdm);
 
 /// Object i's (0 or 1) state in its REF_FRAME [m, m/s].
 StateEci cdm_state(const Cdm& cdm, int i);
