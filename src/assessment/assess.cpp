@@ -114,6 +114,14 @@ Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
                 "held constant over the shift";
   for (int i = 0; i < 2; ++i) {
     a.at_tca[i] = in.obj[i];
+    if (in.obj[i].has_velocity_cov) {  // the whole 6x6 (a velocity-block NPD is an NPD too)
+      bool npd = false;
+      double min_ev = 0.0;
+      a.at_tca[i].cov_eci = repair_covariance6(in.obj[i].cov_eci, in.obj[i].name, &npd, &min_ev);
+      a.npd[i] = npd;
+      a.min_eigenvalue[i] = min_ev;
+      continue;
+    }
     const CovarianceRepair rep =
         repair_covariance(in.obj[i].cov_eci.block<3, 3>(0, 0), in.obj[i].name);
     a.at_tca[i].cov_eci.block<3, 3>(0, 0) = rep.cov_m2;

@@ -201,6 +201,13 @@ bool same_unit(const std::string& a, const std::string& b) {
   return unit_exponents(a, &ea) && unit_exponents(b, &eb) && ea == eb;
 }
 
+// A diagonal term of the covariance (CR_R, CRDOT_RDOT, CDRG_DRG, ...): C<a>_<a>.
+bool is_variance(const std::string& key) {
+  const std::size_t u = key.find('_');
+  return key.size() > 2 && key[0] == 'C' && u != std::string::npos &&
+         key.compare(1, u - 1, key, u + 1, std::string::npos) == 0;
+}
+
 void check_item(const CdmItem& it, CdmSectionId id) {
   if (it.key == "COMMENT") return;
   if (it.value.empty()) fail(it, "expected a value, found none");
@@ -216,6 +223,9 @@ void check_item(const CdmItem& it, CdmSectionId id) {
     } catch (const std::exception&) {
       fail(it, "expected an epoch YYYY-MM-DDThh:mm:ss[.d], found '" + it.value + "'");
     }
+  }
+  if (id == CdmSectionId::kCovariance && is_variance(it.key) && std::strtod(it.value.c_str(), nullptr) < 0.0) {
+    fail(it, "a variance cannot be negative, found '" + it.value + "' (malformed covariance)");
   }
   const std::string unit = cdm_keyword_unit(it.key);
   if (!it.unit.empty() && !same_unit(it.unit, unit))
