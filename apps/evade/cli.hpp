@@ -5,7 +5,7 @@
 //   evade::cli::Runner setup(CLI::App& app) {
 //     auto opts = std::make_shared<MyOptions>();
 //     evade::cli::add_common_options(app, opts->common);
-//     app.add_option("--seed", opts->seed, "...");
+//     app.add_option("--seed", opts->seed, "... [-]");  // a number: its unit in brackets
 //     return [opts]() { return run_my_command(*opts); };   // returns the exit code
 //   }
 //   const bool kRegistered = evade::cli::register_command(
@@ -19,9 +19,15 @@
 // there has no recovery (there is nowhere else to report it) and must not change a command's
 // result, so its return value is discarded explicitly.
 //
-// Exit codes: 0 success; 1 runtime failure; 2 bad input (config::ConfigError or
-// std::invalid_argument thrown by the command, or a CLI11 parse error) — the message names
-// the key, the value and what is allowed.
+// Help texts: a number's help ends with its unit in brackets ("[s]", "[m/s^2]", "[-]" for a
+// count or an id), and the option keeps a numeric type so that CLI11 shows INT or FLOAT (ctest
+// cli.NumericFlagsShowTypeAndUnit).
+//
+// Exit codes (README.md "Exit codes"): 0 success; 1 runtime failure; 2 bad input
+// (config::ConfigError or std::invalid_argument thrown by the command, or a CLI11 parse
+// error; an unknown command gets the nearest registered one as a suggestion) — the message
+// names the key, the value and what is allowed; 3 and 4 for a signed command the node
+// refused or did not acknowledge.
 #pragma once
 
 #include <array>

@@ -146,11 +146,11 @@ Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   app.add_option("--scenario", o->scenario, "scenario with a conjunction: block");
   app.add_option("--cdm", o->cdm, "a CCSDS CDM file (KVN or XML)");
-  app.add_option("--encounter-plane", o->plane, "MISS_X_M,MISS_Y_M,SIGMA_X_M,SIGMA_Y_M,HBR_M");
+  app.add_option("--encounter-plane", o->plane, "MISS_X_M,MISS_Y_M,SIGMA_X_M,SIGMA_Y_M,HBR_M [m]");
   app.add_option("--set", o->sets, "override a scenario key (repeatable)");
   app.add_option("--hbr-m", o->hbr_m, "hard-body radius for --cdm [m]")->check(CLI::PositiveNumber);
-  app.add_option("--mc", o->mc, "Monte Carlo samples")->check(CLI::Range(1L, 100000000L));
-  app.add_option("--seed", o->seed, "Monte Carlo seed")->capture_default_str();
+  app.add_option("--mc", o->mc, "Monte Carlo samples [-]")->check(CLI::Range(1L, 100000000L));
+  app.add_option("--seed", o->seed, "Monte Carlo seed [-]")->capture_default_str();
   app.add_flag("--json", o->json, "print a machine-readable JSON result on stdout");
   return [o]() { return run(*o); };
 }

@@ -33,9 +33,9 @@ int run_key(const KeyOptions& o) {
 
 evade::cli::Runner setup(CLI::App& app) {
   auto o = std::make_shared<KeyOptions>();
-  app.add_option("--activate", o->activate, "INTEGER: key id whose messages the node accepts from now on")
+  app.add_option("--activate", o->activate, "key id whose messages the node accepts from now on [-]")
       ->check(CLI::Range(1, 2147483647));
-  app.add_option("--retire", o->retire, "INTEGER: key id whose messages the node rejects from now on, across restarts")
+  app.add_option("--retire", o->retire, "key id whose messages the node rejects from now on, across restarts [-]")
       ->check(CLI::Range(1, 2147483647));
   evade::cli::add_uplink_flags(app, o->up);
   return [o]() { return run_key(*o); };

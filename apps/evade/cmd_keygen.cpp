@@ -37,7 +37,7 @@ int run_keygen(const KeygenOptions& o) {
 evade::cli::Runner setup(CLI::App& app) {
   auto o = std::make_shared<KeygenOptions>();
   app.add_option("--out", o->out, "new key file to write (refused if it exists)")->required();
-  app.add_option("--key-id", o->key_id, "INTEGER: key id (security association), 1 .. 2147483647")
+  app.add_option("--key-id", o->key_id, "key id (security association) [-]")
       ->check(CLI::Range(1, 2147483647))->capture_default_str();
   app.add_option("--role", o->role,
                  "command (plans, arm, key commands) | sensor (nav, angles, sim clock)")

@@ -63,9 +63,9 @@ std::string parameters_markdown() {
                 formation::maneuver_timing_params());
   md += section("Formation propagation (paper 003)", "`evade plan formation`", "propagation.",
                 formation::propagation_params());
-  md += section("Conjunction assessment (issue 12)", "`evade assess`",
+  md += section("Conjunction assessment", "`evade assess`",
                 "assessment.", assessment::assess_params());
-  md += section("Collision-avoidance manoeuvre (issue 12)", "`evade plan cam`", "cam.",
+  md += section("Collision-avoidance manoeuvre", "`evade plan cam`", "cam.",
                 assessment::cam_params());
   return md;
 }

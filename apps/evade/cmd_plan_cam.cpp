@@ -191,17 +191,17 @@ Runner setup(CLI::App& app) {
   app.add_option("--set", o->sets, "override a scenario key (repeatable)");
   app.add_option("--hbr-m", o->hbr_m, "hard-body radius for --cdm [m]")->check(CLI::PositiveNumber);
   app.add_option("--lead-s", o->req.lead_s, "burn time before TCA [s]");
-  app.add_option("--pc-max", o->req.pc_max, "Pc threshold")->capture_default_str();
+  app.add_option("--pc-max", o->req.pc_max, "Pc threshold [-]")->capture_default_str();
   app.add_option("--min-miss-m", o->req.min_miss_m, "smallest miss distance after the burn [m]");
   app.add_flag("--along-track-only", o->req.along_track_only, "burn along track only");
-  app.add_option("--sweep-lead", o->sweep, "A:B:N: plan at N lead times from A to B s (trade space)");
+  app.add_option("--sweep-lead", o->sweep, "A:B:N: plan at N lead times from A to B [s] (trade space)");
   add_plan_output_options(app, o->out);
   app.add_flag("--json", o->json, "print a machine-readable JSON result on stdout");
   return [o]() { return run(*o); };
 }
 
 const bool kRegistered = register_command(
-    {{"plan", "cam"}, "Minimum-dv collision-avoidance burn for a Pc threshold (issue 12)", &setup});
+    {{"plan", "cam"}, "Minimum-dv collision-avoidance burn for a Pc threshold", &setup});
 
 }  // namespace
 }  // namespace evade::cli

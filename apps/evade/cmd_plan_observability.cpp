@@ -223,7 +223,7 @@ Runner setup(CLI::App& app) {
   add_common_options(app, o->common, "seed4");
   app.add_option("--objective", o->objective, "paper | los-change | estimation (default: scenario)")
       ->check(CLI::IsMember({"paper", "los-change", "estimation"}));
-  app.add_option("--seed", o->seed, "ISRES seed (default: scenario isres.seed)")
+  app.add_option("--seed", o->seed, "ISRES seed [-] (default: scenario isres.seed)")
       ->check(CLI::Range(0L, 2147483647L));
   add_plan_output_options(app, o->out);
   return [o]() { return run(*o); };

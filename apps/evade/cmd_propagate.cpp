@@ -138,8 +138,8 @@ void add_catalog_options(CLI::App& app, CatalogPropagateOptions& c) {
   auto* tle = app.add_option("--tle", c.tle_path, "TLE/3LE file: propagate every object with SGP4");
   auto* omm = app.add_option("--omm", c.omm_path, "CCSDS OMM (KVN or XML) or GP JSON/CSV file, as --tle");
   tle->excludes(omm);
-  app.add_option("--span-s", c.span_s, "with --tle/--omm: time span from the latest element epoch (s)");
-  app.add_option("--step-s", c.step_s, "with --tle/--omm: output step (s)");
+  app.add_option("--span-s", c.span_s, "with --tle/--omm: time span from the latest element epoch [s]");
+  app.add_option("--step-s", c.step_s, "with --tle/--omm: output step [s]");
   app.add_option("--frame", c.frame, "with --tle/--omm: teme or eci (J2000)");
 }
 

@@ -1,5 +1,7 @@
 // evade CLI entry point: builds the command tree from the registry and maps errors to
-// exit codes (0 ok, 1 runtime failure, 2 bad input).
+// exit codes (0 ok, 1 runtime failure, 2 bad input, including an unknown command, which
+// gets the nearest command name as a suggestion).
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -8,6 +10,9 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cli.hpp"
 #include "evade/sgp4/tle_reader.hpp"
@@ -55,6 +60,95 @@ std::vector<std::pair<CLI::App*, Runner>> build_commands(CLI::App& app) {
   return runners;
 }
 
+// Edit distance (insertions, deletions, substitutions) between a and b.
+std::size_t levenshtein(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// When the command words of argv name no registered command ("evade scren", "evade plan
+// cma", "evade pln cam"), the message for it: the nearest registered name within an edit
+// distance of 2 as a suggestion; "" when the words are a command (the parse error is then
+// about something else, and CLI11's message says what).
+std::string unknown_command_message(int argc, char** argv) {
+  constexpr std::size_t kMaxDistance = 2;
+  const auto word = [&](int i) -> std::string {
+    return i < argc && argv[i][0] != '-' ? std::string(argv[i]) : std::string();
+  };
+  const std::string w1 = word(1), w2 = w1.empty() ? std::string() : word(2);
+  if (w1.empty()) return "";
+  const Registry& reg = registry();
+  std::vector<std::string> top, group, pairs;  // top-level names, w1's commands, "g c"
+  for (std::size_t k = 0; k < reg.count; ++k) {
+    const Command& c = reg.commands[k];
+    if (std::find(top.begin(), top.end(), c.path[0]) == top.end()) top.emplace_back(c.path[0]);
+    if (c.path[1] == nullptr) continue;
+    pairs.push_back(std::string(c.path[0]) + " " + c.path[1]);
+    if (w1 == c.path[0]) group.emplace_back(c.path[1]);
+  }
+  std::string typed;
+  const std::vector<std::string>* names = nullptr;
+  if (std::find(top.begin(), top.end(), w1) != top.end()) {
+    // A known command; only a group's second word can be wrong ("plan cma").
+    if (group.empty() || w2.empty() || std::find(group.begin(), group.end(), w2) != group.end())
+      return "";
+    typed = w1 + " " + w2;
+    names = &pairs;
+  } else if (!w2.empty() && !pairs.empty()) {
+    // Two words: "pln cam" may be a two-word command with its first word mistyped.
+    typed = w1 + " " + w2;
+    names = &pairs;
+  }
+  std::string best;
+  std::size_t best_d = kMaxDistance + 1;
+  if (names != nullptr) {
+    for (const std::string& n : *names) {
+      const std::size_t d = levenshtein(typed, n);
+      if (d < best_d) {
+        best_d = d;
+        best = n;
+      }
+    }
+  }
+  if (best.empty() && std::find(top.begin(), top.end(), w1) == top.end()) {
+    typed = w1;
+    for (const std::string& n : top) {
+      const std::size_t d = levenshtein(w1, n);
+      if (d < best_d) {
+        best_d = d;
+        best = n;
+      }
+    }
+  }
+  std::string msg = "evade: unknown command '" + typed + "'";
+  return best.empty() ? msg + " (see evade --help)" : msg + "; did you mean '" + best + "'?";
+}
+
+// The first argument no option or command took (a mistyped flag), with the command it was
+// given to ("" and "" if none). CLI11 checks required options before unexpected arguments,
+// so `evade keygen --bogus` would otherwise only say "--out is required".
+std::pair<std::string, std::string> first_unrecognized(const CLI::App& app,
+                                                       const std::string& path) {
+  for (const std::string& a : app.remaining()) {
+    if (!a.empty() && a[0] == '-') return {a, path};
+  }
+  for (const CLI::App* sub : app.get_subcommands()) {
+    auto r = first_unrecognized(*sub, path + " " + sub->get_name());
+    if (!r.first.empty()) return r;
+  }
+  return {"", ""};
+}
+
 // Diagnostics go to stderr; a failed print there has no recovery (there is nowhere else to
 // report it), so the results of these std::fprintf(stderr, ...) are discarded explicitly.
 int run_cli(int argc, char** argv) {
@@ -71,6 +165,23 @@ int run_cli(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    // --help and --version are ParseErrors too (exit 0); any other is bad input. A mistyped
+    // command reaches here as "A subcommand is required" (or an unexpected argument): say
+    // which word is no command, and which command was probably meant; a mistyped flag: name
+    // it, before any complaint about a missing one.
+    if (e.get_exit_code() != 0) {
+      const std::string unknown = unknown_command_message(argc, argv);
+      if (!unknown.empty()) {
+        (void)std::fprintf(stderr, "%s\n", unknown.c_str());
+        return 2;
+      }
+      const auto [flag, cmd] = first_unrecognized(app, "evade");
+      if (!flag.empty()) {
+        (void)std::fprintf(stderr, "%s: unknown option '%s' (see %s --help)\n", cmd.c_str(),
+                           flag.c_str(), cmd.c_str());
+        return 2;
+      }
+    }
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }

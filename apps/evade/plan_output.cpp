@@ -15,7 +15,7 @@ void add_plan_output_options(CLI::App& app, PlanOutputOptions& o) {
   app.add_flag("--publish", o.publish, "publish the plan as evade_burn_plan_t on LCM");
   app.add_option("--lcm-url", o.lcm_url, "LCM URL for --publish (default: LCM_DEFAULT_URL)");
   app.add_option("--channel", o.channel, "LCM channel for --publish")->capture_default_str();
-  app.add_option("--seq", o.seq, "seq field (plan id) of the published plan")
+  app.add_option("--seq", o.seq, "seq field (plan id) of the published plan [-]")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--epoch-utime", o.epoch_utime_us,
                  "utime [us] of the plan's t = 0 (default: the publish time)")
@@ -28,13 +28,13 @@ void add_plan_output_options(CLI::App& app, PlanOutputOptions& o) {
   app.add_option("--key", o.key_file,
                  "with --publish: sign with this command key file (`evade keygen`) and retransmit "
                  "until the node acknowledges the plan: exit 0 accepted, 3 rejected, 4 timeout");
-  app.add_option("--key-id", o.key_id, "which key of --key (default: its only command key)")
+  app.add_option("--key-id", o.key_id, "which key of --key [-] (default: its only command key)")
       ->check(CLI::Range(1, 2147483647));
   app.add_option("--ack-timeout-s", o.ack_timeout_s,
-                 "NUMBER [s]: give up waiting for the acknowledgement after this long")
+                 "give up waiting for the acknowledgement after this long [s]")
       ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
   app.add_option("--retransmit-s", o.retransmit_s,
-                 "NUMBER [s]: send the signed plan again after this long without an acknowledgement")
+                 "send the signed plan again after this long without an acknowledgement [s]")
       ->check(CLI::Range(0.001, 60.0))->capture_default_str();
 }
 

@@ -115,8 +115,8 @@ void add_cdm_out_options(CLI::App& app, CdmOutOptions& o) {
       ->check(CLI::IsMember({"kvn", "xml"}))
       ->capture_default_str();
   app.add_option("--cov-rtn-sigma-m", o.cov_sigma,
-                 "with --cdm-out: assumed RTN position sigmas R,T,N (m) of every object; the CDMs then carry a Pc");
-  app.add_option("--hbr-m", o.hbr_m, "with --cdm-out: hard-body radius for the Pc (m; default: the objects' radii)")
+                 "with --cdm-out: assumed RTN position sigmas R,T,N [m] of every object; the CDMs then carry a Pc");
+  app.add_option("--hbr-m", o.hbr_m, "with --cdm-out: hard-body radius for the Pc [m] (default: the objects' radii)")
       ->check(CLI::PositiveNumber);
 }
 

@@ -10,14 +10,14 @@ namespace evade::cli {
 
 void add_uplink_flags(CLI::App& app, UplinkFlags& f) {
   app.add_option("--key", f.key_file, "command key file (`evade keygen`) to sign with")->required();
-  app.add_option("--key-id", f.key_id, "INTEGER: which key of --key (default: its only command key)")
+  app.add_option("--key-id", f.key_id, "which key of --key [-] (default: its only command key)")
       ->check(CLI::Range(1, 2147483647));
   app.add_option("--lcm-url", f.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
   app.add_option("--ack-timeout-s", f.ack_timeout_s,
-                 "NUMBER [s]: give up waiting for the node's acknowledgement after this long")
+                 "give up waiting for the node's acknowledgement after this long [s]")
       ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
   app.add_option("--retransmit-s", f.retransmit_s,
-                 "NUMBER [s]: send again (signed afresh) after this long without an acknowledgement")
+                 "send again (signed afresh) after this long without an acknowledgement [s]")
       ->check(CLI::Range(0.001, 60.0))->capture_default_str();
   app.add_flag("--json", f.json, "machine-readable result");
 }

@@ -2,8 +2,8 @@
 // real-time LCM node. Inputs evade_angles_t / evade_nav_state_t / evade_arm_t (and, with
 // --lockstep, evade_sim_clock_t); outputs one evade_thrust_cmd_t per cycle and
 // evade_guidance_status_t. Design and requirement IDs: docs/GUIDANCE_NODE.md.
-// Exit codes: 0 normal stop (signal, --max-cycles, end of input), 1 runtime failure,
-// 2 bad input (flags or config, with the key, value and allowed range).
+// Exit codes: 0 normal stop (signal, --max-cycles, end of input) or --help/--version,
+// 1 runtime failure, 2 bad input (flags or config, with the key, value and allowed range).
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -13,6 +13,7 @@
 #include <exception>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include <CLI/CLI.hpp>
 #include <lcm/lcm.h>
@@ -245,6 +246,7 @@ int node_main(int argc, char** argv) {
   node::NodeOptions opts;
   CLI::App app{"evade_guidance_node: paper-000 close-range evasion guidance over LCM",
                "evade_guidance_node"};
+  app.set_version_flag("--version", std::string("evade_guidance_node ") + EVADE_VERSION);
   node::add_options(app, opts);
   try {
     app.parse(argc, argv);

@@ -22,24 +22,24 @@ void add_options(CLI::App& app, NodeOptions& o) {
   const char* help[] = {"loop rate = guidance.rate_hz [Hz]",
                         "input stale limit = guidance.stale_limit_s [s]",
                         "maximum acceleration = guidance.max_accel_mps2 [m/s^2]",
-                        "publish status every N cycles = node.status_divider",
-                        "bounded input queue capacity = node.queue_capacity"};
+                        "publish status every N cycles = node.status_divider [-]",
+                        "bounded input queue capacity = node.queue_capacity [-]"};
   for (std::size_t i = 0; i < o.params.size(); ++i) {
     app.add_option(o.params[i].flag, o.params[i].value, help[i]);
   }
   app.add_flag("--lockstep", o.lockstep, "run one cycle per evade_sim_clock_t tick");
   app.add_flag("--realtime", o.realtime, "try SCHED_FIFO and mlockall (continues if refused)");
-  app.add_option("--rt-priority", o.rt_priority, "SCHED_FIFO priority")
+  app.add_option("--rt-priority", o.rt_priority, "SCHED_FIFO priority [-]")
       ->check(CLI::Range(1, 99))->capture_default_str();
   app.add_option("--config", o.config, "optional YAML with guidance.* and node.* keys");
   app.add_option("--scenario", o.scenario,
                  "take guidance.* from this sim scenario, exactly as `evade sim` does (--config "
                  "and flags given explicitly still win)");
   app.add_option("--set", o.sets, "override a scenario key: --set key.path=value (repeatable)");
-  app.add_option("--max-cycles", o.max_cycles, "stop after N cycles (0 = until SIGINT/SIGTERM)")
+  app.add_option("--max-cycles", o.max_cycles, "stop after N cycles [-] (0 = until SIGINT/SIGTERM)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--idle-exit-s", o.idle_exit_s,
-                 "lockstep: exit after this long without a tick (0 = never)")
+                 "lockstep: exit after this long without a tick [s] (0 = never)")
       ->check(CLI::Range(0.0, 86400.0));
   app.add_flag("--start-disarmed", o.start_disarmed, "start disarmed (evade_arm_t arms)");
   app.add_flag("--stats-json", o.stats_json, "print run statistics as JSON on stdout at exit");

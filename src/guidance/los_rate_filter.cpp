@@ -160,7 +160,6 @@ void LosRateFilter::initialize(const AnglesMeasurement& m, double t_s) noexcept 
   updates_since_init_ = 1;
   consecutive_rejects_ = 0;
   last_nis_ = 0.0;
-  last_dof_ = 0;
 }
 
 void LosRateFilter::propagate_mean(const Vec3& u, const Vec3& u_dot, double dt_s, Vec3* u_out,
@@ -230,7 +229,6 @@ void LosRateFilter::predict_rate_to(double t_s, Vec3* u_eci, Vec3* u_dot_eci_ps,
 bool LosRateFilter::correct(const AnglesMeasurement& m, const Vec3& u, const Vec3& ud, Vec6* x,
                             Mat6* P) noexcept {
   const Vec3& z = z_;
-  last_dof_ = m.has_rates ? 4 : 2;
   if (!(z.dot(u) > 0.0)) {  // a measurement more than 90° off is an outlier whatever P says
     last_nis_ = INFINITY;
     return false;

@@ -1,5 +1,6 @@
-// GuidanceLaw::step must not allocate (STYLE.md §6): count operator new calls across 10 000
-// steps of a tracked, evading encounter with noisy angles.
+// GuidanceLaw::step must not allocate (real-time code allocates nothing after
+// initialization): count operator new calls across 10 000 steps of a tracked, evading
+// encounter with noisy angles.
 #include <atomic>
 #include <cmath>
 #include <cstdlib>

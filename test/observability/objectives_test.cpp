@@ -198,7 +198,7 @@ TEST(ObservabilityPaper004, PaperObjectiveOptimumNearPublishedTheta) {
 TEST(ObservabilityPaper004, OnlyTheOptimumKeepsAzimuthChangeSmall) {
   // Paper Fig. 6: only the optimum keeps |Δθ_m| below 0.01 rad over 1000 s; A and B do not.
   // Ours: optimum 4.8e-3, A 8.7e-3, B 1.13e-2 rad. The ordering and B > 0.01 reproduce; A
-  // stays (just) below 0.01 in our model, contrary to the paper (validation_004.md).
+  // stays (just) below 0.01 in our model, contrary to the paper (docs/VALIDATION.md).
   const SampledProblem s = sample(seed4());
   const GridBest g = grid_search(s.problem, true, [&](double e, double t) { return paper_objective(s, e, t); });
   const double opt = los_change(s, g.eps, g.theta).max_azimuth_change_rad;

@@ -1,5 +1,6 @@
 // Replaces the global operator new / delete with versions that count every allocation, for
-// the tests that prove code allocates nothing (STYLE.md §6). Include it in exactly one source
+// the tests that prove code allocates nothing (real-time code allocates nothing after
+// initialization: docs/ARCHITECTURE.md "Conventions"). Include it in exactly one source
 // file of a test executable; read g_news before and after the code under test.
 #pragma once
 

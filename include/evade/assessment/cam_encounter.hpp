@@ -56,7 +56,6 @@ class CamEncounter {
 
   const Assessment& assessment() const { return a_; }
   double lead_s() const { return lead_s_; }
-  double hbr_m() const { return hbr_m_; }
   /// The primary at the burn time, before the burn.
   const StateEci& primary_at_burn() const { return burn_state_; }
   /// RTN (rows R, T, N of the primary at the burn) -> ECI.

@@ -1,10 +1,10 @@
 // Scenario files: YAML documents read through typed, range-checked accessors.
 //
-// Validate before running, then trust (STYLE.md §3): every read names its key and its
-// allowed range; a bad value throws ConfigError with a message naming the key, the value
-// and what is allowed; after a command has read everything it needs, check_all_used()
-// reports any key nobody read (a typo, or a key with the wrong unit suffix such as
-// `accel` for `accel_mps2`). Keys carry their SI unit in their name.
+// Input is validated once, before anything runs, and trusted afterwards: every read names
+// its key and its allowed range; a bad value throws ConfigError with a message naming the
+// key, the value and what is allowed; after a command has read everything it needs,
+// check_all_used() reports any key nobody read (a typo, or a key with the wrong unit suffix
+// such as `accel` for `accel_mps2`). Keys carry their SI unit in their name.
 //
 // Keys are dot paths: "sensor.noise_rad"; a numeric component indexes a list:
 // "objects.3.a_m". Overrides "--set key.path=value" parse value as YAML (so lists work:

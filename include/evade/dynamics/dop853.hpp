@@ -165,8 +165,6 @@ class Dop853 {
   const Vector& x_prev() const { return x_prev_; }
   const IntegrationStats& stats() const { return stats_; }
   const std::string& failure_reason() const { return failure_; }
-  /// Step size proposed for the next step [s] (signed).
-  double h_next_s() const { return h_; }
 
   /// 7th-order continuous extension on [t_prev_s, t_s] of the last accepted step (CONTD8).
   /// The first call after a step costs three extra Rhs evaluations. Throws

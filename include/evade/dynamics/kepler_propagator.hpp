@@ -17,8 +17,6 @@ class KeplerOrbit {
   /// State dt_s after the initial state (any sign, any length: n dt is reduced modulo 2 pi).
   /// Throws std::invalid_argument for a non-finite dt_s.
   StateEci state_at(double dt_s) const;
-  double a_m() const { return a_; }
-  double e() const { return e_; }
   double mean_motion_radps() const { return n_; }
 
  private:

@@ -48,8 +48,6 @@ class FormationPropagator {
                                       std::vector<AppliedBurn>* applied = nullptr) const;
 
   const std::vector<ConstraintDef>& constraints() const { return defs_; }
-  double nodal_period_s() const { return period_s_; }
-  double t_eval_s() const { return t_eval_s_; }
   /// Current (scenario) deviation of each row.
   const std::vector<double>& initial_deviation() const { return q0_; }
 

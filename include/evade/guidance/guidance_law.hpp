@@ -158,7 +158,6 @@ class GuidanceLaw {
 
   const GuidanceStatus& status() const noexcept { return status_; }
   const GuidanceConfig& config() const noexcept { return cfg_; }
-  const LosRateFilter& filter() const noexcept { return filter_; }
 
  private:
   /// Encounter state: what the law remembers of the current threat between cycles.

@@ -75,7 +75,6 @@ class LosRateFilter {
   const Mat6& covariance() const noexcept { return P_; }
   /// Normalised innovation squared of the last processed measurement.
   double last_nis() const noexcept { return last_nis_; }
-  int last_dof() const noexcept { return last_dof_; }
   /// Unit LOS of the last measurement given to update() (whatever became of it).
   const Vec3& last_measured_u_eci() const noexcept { return z_; }
   long accepted() const noexcept { return accepted_; }
@@ -112,7 +111,6 @@ class LosRateFilter {
   Vec3 u_dot_ = Vec3::Zero();
   Mat6 P_ = Mat6::Zero();
   double last_nis_ = 0.0;
-  int last_dof_ = 0;
   Vec3 z_ = Vec3::UnitX();  // unit LOS of the last measurement
   Vec3 zd_ = Vec3::Zero();  // its rate from the measured angle rates (when it has them)
   long accepted_ = 0;

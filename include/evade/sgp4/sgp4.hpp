@@ -63,7 +63,6 @@ class Sgp4Propagator {
 
   /// The error code at epoch (kNone when the element set initialised cleanly).
   Sgp4Error init_error() const noexcept { return init_error_; }
-  bool deep_space() const noexcept { return deep_; }
   /// State at tsince minutes from the element epoch. Thread-safe (const, no stored state).
   Sgp4State propagate_min(double tsince_min) const noexcept;
   /// State at t_s seconds from the element epoch.

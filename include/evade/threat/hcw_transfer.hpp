@@ -115,7 +115,6 @@ class HcwTransfer {
   Vec6 plan_residual(const RendezvousPlan& plan, const Vec6& d) const;
 
   // Internals shared with the SQP (rendezvous_sqp.hpp).
-  const Mat3& phi_rv_T() const { return rv_T_; }
   const Mat3& phi_vv_T() const { return vv_T_; }
   const Mat3& phi_rv_T_inv() const { return rv_T_inv_; }
 
