@@ -63,6 +63,38 @@ TEST(Cdm, PcOfShippedAlfanoCase01) {
   EXPECT_NEAR(assess(in, cfg).pc_2d.pc, 1.46749549e-01, 1e-3 * 1.46749549e-01);
 }
 
+// A negative eigenvalue only in the velocity block (CTDOT_RDOT^2 > CRDOT_RDOT CTDOT_TDOT) is an
+// NPD covariance: the whole 6x6 is checked and repaired, and the repair is reported.
+TEST(Cdm, VelocityBlockNpdIsFoundAndRepaired) {
+  const Cdm c = read_cdm_kvn(edit(shipped(), "CTDOT_RDOT", "CTDOT_RDOT = -1.0e-04 [m**2/s**2]"));
+  ConjunctionInput in;
+  in.hbr_m = 15.0;
+  for (int i = 0; i < 2; ++i) {
+    in.obj[i].state = cdm_state(c, i);
+    in.obj[i].cov_eci = cov_eci_from_rtn(cdm_cov_rtn(c, i), in.obj[i].state);
+    in.obj[i].has_velocity_cov = true;
+  }
+  AssessConfig cfg;
+  cfg.tca_search_s = 0.0;
+  const Assessment a = assess(in, cfg);
+  EXPECT_TRUE(a.npd[0]);
+  EXPECT_LT(a.min_eigenvalue[0], 0.0);
+  EXPECT_FALSE(a.npd[1]);
+}
+
+// A negative variance is malformed, not an NPD to repair: refused naming the keyword and line.
+TEST(Cdm, NegativeVarianceIsRefusedNamingTheKeyword) {
+  try {
+    (void)read_cdm_kvn(edit(shipped(), "CR_R", "CR_R = -1.0 [m**2]"));
+    ADD_FAILURE() << "a negative CR_R was accepted";
+  } catch (const CdmError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("'CR_R'"), std::string::npos) << m;
+    EXPECT_NE(m.find("line 39"), std::string::npos) << m;
+    EXPECT_NE(m.find("variance cannot be negative"), std::string::npos) << m;
+  }
+}
+
 struct Bad {
   const char* key;       // line to edit
   const char* with;      // replacement ("" deletes)
