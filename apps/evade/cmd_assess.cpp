@@ -101,6 +101,23 @@ nlohmann::json cdm_json(const Cdm& c) {
           {"collision_probability_method", method.empty() ? nlohmann::json(nullptr) : nlohmann::json(method)}};
 }
 
+// Every repair and every reading note on stderr as well as in the JSON and the text output:
+// a result computed from a repaired covariance must never look like one from the input.
+void report_repairs(const nlohmann::json& j) {
+  for (int i = 0; i < 2; ++i) {
+    if (!j["covariance_repaired"][i].get<bool>()) continue;
+    (void)std::fprintf(stderr,
+                       "evade assess: object %d's covariance is not positive definite (smallest "
+                       "eigenvalue %.6e): repaired by eigenvalue clipping before the Pc\n",
+                       i + 1, j["covariance_min_eigenvalue_m2"][i].get<double>());
+  }
+  if (j.contains("notes")) {
+    for (const auto& n : j["notes"]) {
+      (void)std::fprintf(stderr, "evade assess: note: %s\n", n.get<std::string>().c_str());
+    }
+  }
+}
+
 nlohmann::json run_states(const Options& o) {
   config::Scenario sc = o.scenario.empty() ? config::Scenario::empty("--cdm")
                                            : config::Scenario::load(o.scenario);
@@ -116,7 +133,11 @@ nlohmann::json run_states(const Options& o) {
   if (o.mc > 0) mc = MonteCarloOptions{o.mc, o.seed, 0.0, 1.96};
   nlohmann::json j = assessment_json(assess(in, cfg, mc), in.hbr_m);
   j["source"] = o.scenario.empty() ? "cdm " + o.cdm : "scenario " + sc.source();
-  if (cdm) j["cdm"] = cdm_json(*cdm);
+  if (cdm) {
+    j["cdm"] = cdm_json(*cdm);
+    j["notes"] = cdm_unit_notes(*cdm);
+  }
+  report_repairs(j);
   return j;
 }
 
@@ -131,6 +152,18 @@ void print_text(const nlohmann::json& j) {
   if (j.contains("short_term") && !j["short_term"]["valid"].get<bool>())
     std::printf("  short-term assumptions fail: %s\n",
                 j["short_term"]["reason"].get<std::string>().c_str());
+  if (j.contains("covariance_repaired")) {
+    for (int i = 0; i < 2; ++i) {
+      if (j["covariance_repaired"][i].get<bool>()) {
+        std::printf("  object %d covariance repaired (not positive definite, smallest eigenvalue "
+                    "%.6e, clipped)\n",
+                    i + 1, j["covariance_min_eigenvalue_m2"][i].get<double>());
+      }
+    }
+  }
+  if (j.contains("notes")) {
+    for (const auto& n : j["notes"]) std::printf("  note: %s\n", n.get<std::string>().c_str());
+  }
 }
 
 int run(const Options& o) {
