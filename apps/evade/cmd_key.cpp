@@ -22,10 +22,10 @@ int run_key(const KeyOptions& o) {
   if ((o.activate > 0) == (o.retire > 0)) {
     throw std::invalid_argument("give exactly one of --activate N and --retire N");
   }
-  const evade::guidance_lcm::SigningKey key = evade::lcm_link::load_command_key(o.up.key_file, o.up.key_id);
+  const evade::guidance_lcm::SigningKey key = evade::lcm_link::load_command_key(o.up.sign.key_file, o.up.sign.key_id);
   const bool act = o.activate > 0;
   const evade::lcm_link::UplinkResult r = evade::lcm_link::uplink_key_cmd(
-      evade::cli::uplink_options(o.up),
+      evade::cli::uplink_options(o.up.sign, o.up.lcm_url),
       act ? evade::evade_key_cmd_t::OP_ACTIVATE : evade::evade_key_cmd_t::OP_RETIRE,
       act ? o.activate : o.retire, key);
   return evade::cli::report_uplink(act ? "activate key" : "retire key", r, key.id, o.up.json);

@@ -25,17 +25,11 @@ void add_plan_output_options(CLI::App& app, PlanOutputOptions& o) {
       ->capture_default_str();
   app.add_option("--plan-out", o.plan_out,
                  "write the plan as a plan file (JSON) for `evade sim --plan FILE`");
-  app.add_option("--key", o.key_file,
-                 "with --publish: sign with this command key file (`evade keygen`) and retransmit "
-                 "until the node acknowledges the plan: exit 0 accepted, 3 rejected, 4 timeout");
-  app.add_option("--key-id", o.key_id, "which key of --key [-] (default: its only command key)")
-      ->check(CLI::Range(1, 2147483647));
-  app.add_option("--ack-timeout-s", o.ack_timeout_s,
-                 "give up waiting for the acknowledgement after this long [s]")
-      ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
-  app.add_option("--retransmit-s", o.retransmit_s,
-                 "send the signed plan again after this long without an acknowledgement [s]")
-      ->check(CLI::Range(0.001, 60.0))->capture_default_str();
+  add_signing_flags(app, o.sign,
+                    "with --publish: sign with this command key file (`evade keygen`) and "
+                    "retransmit until the node acknowledges the plan: exit 0 accepted, 3 "
+                    "rejected, 4 timeout",
+                    false);
 }
 
 bool plan_wanted(const PlanOutputOptions& o) { return o.publish || !o.plan_out.empty(); }
@@ -46,11 +40,8 @@ namespace {
 
 int uplink_signed(const PlanOutputOptions& o, const BurnPlan& plan,
                   const lcm_link::PlanStamp& stamp, nlohmann::json* j) {
-  const guidance_lcm::SigningKey key = lcm_link::load_command_key(o.key_file, o.key_id);
-  lcm_link::UplinkOptions u;
-  u.lcm_url = o.lcm_url;
-  u.timeout_s = o.ack_timeout_s;
-  u.retransmit_s = o.retransmit_s;
+  const guidance_lcm::SigningKey key = lcm_link::load_command_key(o.sign.key_file, o.sign.key_id);
+  const lcm_link::UplinkOptions u = uplink_options(o.sign, o.lcm_url);
   const lcm_link::UplinkResult r = lcm_link::uplink_plan(u, o.channel, plan, o.seq, stamp, key);
   (*j)["published"] = {{"channel", o.channel},
                        {"seq", o.seq},
@@ -66,17 +57,6 @@ int uplink_signed(const PlanOutputOptions& o, const BurnPlan& plan,
 }
 
 }  // namespace
-
-nlohmann::json uplink_json(const lcm_link::UplinkResult& r, std::int32_t key_id) {
-  return {{"outcome", lcm_link::outcome_name(r.outcome)},
-          {"code", r.code},
-          {"reason", r.reason},
-          {"key_id", key_id},
-          {"transmissions", r.transmissions},
-          {"ack_s", r.outcome == lcm_link::AckOutcome::kTimeout ? nlohmann::json(nullptr)
-                                                               : nlohmann::json(r.ack_s)},
-          {"exit_code", lcm_link::exit_code(r)}};
-}
 
 nlohmann::json impulses_json(const BurnPlan& plan) {
   nlohmann::json a = nlohmann::json::array();
@@ -100,13 +80,13 @@ int output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json
     (*j)["plan_file"] = o.plan_out;
   }
   if (!o.publish) {
-    if (!o.key_file.empty()) throw std::invalid_argument("--key applies only with --publish");
+    if (!o.sign.key_file.empty()) throw std::invalid_argument("--key applies only with --publish");
     return 0;
   }
   lcm_link::PlanStamp stamp;
   stamp.epoch_utime = o.epoch_utime_us;
   stamp.frame = frame;
-  if (!o.key_file.empty()) return uplink_signed(o, plan, stamp, j);
+  if (!o.sign.key_file.empty()) return uplink_signed(o, plan, stamp, j);
   (void)std::fprintf(stderr, "evade: publishing an unsigned plan (no --key): a guidance node "
                      "whose policy requires signed plans (the default) refuses it\n");
   const std::int64_t utime = lcm_link::publish_burn_plan(o.lcm_url, o.channel, plan, o.seq, stamp);

@@ -13,6 +13,7 @@
 
 #include "evade/core/burn_plan.hpp"
 #include "evade/lcm_link/command_uplink.hpp"
+#include "uplink_options.hpp"
 
 namespace evade::cli {
 
@@ -24,10 +25,7 @@ struct PlanOutputOptions {
   long long epoch_utime_us = 0;               ///< utime of plan t = 0; 0: the publish time
   std::string frame = "rsw";                  ///< frame the node flies: rsw | eci
   std::string plan_out;                       ///< plan file to write; empty: none
-  std::string key_file;                       ///< --key: sign with this command key and wait for the ack
-  int key_id = 0;                             ///< --key-id: which key of the file (0: its only command key)
-  double ack_timeout_s = 5.0;                 ///< --ack-timeout-s
-  double retransmit_s = 0.25;                 ///< --retransmit-s
+  SigningFlags sign;                          ///< --key (sign, wait for the ack) and its flags
 };
 
 /// Adds --publish, --lcm-url, --channel, --seq, --epoch-utime, --frame, --plan-out, --key,
@@ -48,9 +46,6 @@ std::int64_t plan_id(const PlanOutputOptions& o);
 /// --frame eci without ECI Δv) or a file that cannot be written, std::runtime_error when LCM
 /// fails.
 int output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j);
-
-/// An uplink's outcome as JSON (outcome, code, reason, key_id, transmissions, ack_s, exit_code).
-nlohmann::json uplink_json(const lcm_link::UplinkResult& r, std::int32_t key_id);
 
 /// The impulses as JSON (t_s, dv_rsw_mps, dv_eci_mps or null).
 nlohmann::json impulses_json(const BurnPlan& plan);

@@ -4,30 +4,45 @@
 #include <cstdio>
 
 #include "cli.hpp"
-#include "plan_output.hpp"
 
 namespace evade::cli {
 
-void add_uplink_flags(CLI::App& app, UplinkFlags& f) {
-  app.add_option("--key", f.key_file, "command key file (`evade keygen`) to sign with")->required();
+void add_signing_flags(CLI::App& app, SigningFlags& f, const char* key_help, bool required) {
+  CLI::Option* key = app.add_option("--key", f.key_file, key_help);
+  if (required) key->required();
   app.add_option("--key-id", f.key_id, "which key of --key [-] (default: its only command key)")
       ->check(CLI::Range(1, 2147483647));
-  app.add_option("--lcm-url", f.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
   app.add_option("--ack-timeout-s", f.ack_timeout_s,
                  "give up waiting for the node's acknowledgement after this long [s]")
       ->check(CLI::Range(0.01, 3600.0))->capture_default_str();
   app.add_option("--retransmit-s", f.retransmit_s,
                  "send again (signed afresh) after this long without an acknowledgement [s]")
       ->check(CLI::Range(0.001, 60.0))->capture_default_str();
+}
+
+void add_uplink_flags(CLI::App& app, UplinkFlags& f) {
+  add_signing_flags(app, f.sign, "command key file (`evade keygen`) to sign with", true);
+  app.add_option("--lcm-url", f.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
   app.add_flag("--json", f.json, "machine-readable result");
 }
 
-lcm_link::UplinkOptions uplink_options(const UplinkFlags& f) {
+lcm_link::UplinkOptions uplink_options(const SigningFlags& f, const std::string& lcm_url) {
   lcm_link::UplinkOptions u;
-  u.lcm_url = f.lcm_url;
+  u.lcm_url = lcm_url;
   u.timeout_s = f.ack_timeout_s;
   u.retransmit_s = f.retransmit_s;
   return u;
+}
+
+nlohmann::json uplink_json(const lcm_link::UplinkResult& r, std::int32_t key_id) {
+  return {{"outcome", lcm_link::outcome_name(r.outcome)},
+          {"code", r.code},
+          {"reason", r.reason},
+          {"key_id", key_id},
+          {"transmissions", r.transmissions},
+          {"ack_s", r.outcome == lcm_link::AckOutcome::kTimeout ? nlohmann::json(nullptr)
+                                                               : nlohmann::json(r.ack_s)},
+          {"exit_code", lcm_link::exit_code(r)}};
 }
 
 int report_uplink(const char* what, const lcm_link::UplinkResult& r, std::int32_t key_id, bool json) {

@@ -49,8 +49,8 @@ TEST(Cdm, KvnToXmlRoundTripIsIdentical) {
   EXPECT_NE(xml.find("<relativeStateVector>"), std::string::npos);
 }
 
-TEST(Cdm, PcOfShippedAlfanoCase01) {
-  const Cdm c = read_cdm_kvn(shipped());
+// The CDM's two states and 6x6 covariances at TCA, HBR 15 m, assessed as given.
+Assessment assess_at_tca(const Cdm& c) {
   ConjunctionInput in;
   in.hbr_m = 15.0;
   for (int i = 0; i < 2; ++i) {
@@ -60,23 +60,19 @@ TEST(Cdm, PcOfShippedAlfanoCase01) {
   }
   AssessConfig cfg;
   cfg.tca_search_s = 0.0;
-  EXPECT_NEAR(assess(in, cfg).pc_2d.pc, 1.46749549e-01, 1e-3 * 1.46749549e-01);
+  return assess(in, cfg);
+}
+
+TEST(Cdm, PcOfShippedAlfanoCase01) {
+  EXPECT_NEAR(assess_at_tca(read_cdm_kvn(shipped())).pc_2d.pc, 1.46749549e-01,
+              1e-3 * 1.46749549e-01);
 }
 
 // A negative eigenvalue only in the velocity block (CTDOT_RDOT^2 > CRDOT_RDOT CTDOT_TDOT) is an
 // NPD covariance: the whole 6x6 is checked and repaired, and the repair is reported.
 TEST(Cdm, VelocityBlockNpdIsFoundAndRepaired) {
-  const Cdm c = read_cdm_kvn(edit(shipped(), "CTDOT_RDOT", "CTDOT_RDOT = -1.0e-04 [m**2/s**2]"));
-  ConjunctionInput in;
-  in.hbr_m = 15.0;
-  for (int i = 0; i < 2; ++i) {
-    in.obj[i].state = cdm_state(c, i);
-    in.obj[i].cov_eci = cov_eci_from_rtn(cdm_cov_rtn(c, i), in.obj[i].state);
-    in.obj[i].has_velocity_cov = true;
-  }
-  AssessConfig cfg;
-  cfg.tca_search_s = 0.0;
-  const Assessment a = assess(in, cfg);
+  const Assessment a = assess_at_tca(
+      read_cdm_kvn(edit(shipped(), "CTDOT_RDOT", "CTDOT_RDOT = -1.0e-04 [m**2/s**2]")));
   EXPECT_TRUE(a.npd[0]);
   EXPECT_LT(a.min_eigenvalue[0], 0.0);
   EXPECT_FALSE(a.npd[1]);
