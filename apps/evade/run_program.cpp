@@ -61,9 +61,10 @@ std::string plot_script(const std::string& name) {
   for (const std::string& d : config::scenario_search_dirs()) dirs.push_back(d + "/../scripts");
   std::string searched;
   for (const std::string& dir : dirs) {
-    std::string p = dir + "/" + name;  // not const: returned by move
+    std::string p = dir;  // not const: returned by move
+    p.append("/").append(name);
     if (std::ifstream(p).good()) return p;
-    searched += (searched.empty() ? "" : ", ") + dir;
+    searched.append(searched.empty() ? "" : ", ").append(dir);
   }
   throw std::runtime_error("plot script " + name + " not found (searched: " + searched + ")");
 }
