@@ -474,6 +474,8 @@ def check_citations(root, path, comments, problems, md_set, is_doc=False):
                 continue  # `--report OUT.md`: a flag's argument in a usage line, not a citation
             if is_doc and PATH_RE.fullmatch(tok):
                 continue  # a repository path: check_paths says whether it exists
+            if re.match(r"(build|build-[\w-]+|out)/", tok):
+                continue  # an output the scripts write (build/, build-fuzz/, out/), not a citation
             cands = [os.path.join(root, tok), os.path.join(here, tok),
                      os.path.join(root, "docs", tok)]
             if any(os.path.exists(p) for p in cands):
