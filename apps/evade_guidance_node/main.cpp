@@ -21,6 +21,7 @@
 
 #include "evade/auth/key_file.hpp"
 #include "evade/config/scenario.hpp"
+#include "evade/core/quantile.hpp"
 #include "evade/guidance_lcm/internal/node_core.hpp"
 #include "evade/guidance_lcm/lcm_url.hpp"
 #include "node_loop.hpp"
@@ -33,14 +34,6 @@ extern "C" void on_signal(int) { g_stop = 1; }
 
 // Diagnostics go to stderr; a failed print there has no recovery (there is nowhere else to
 // report it), so the results of these std::fprintf(stderr, ...) are discarded explicitly.
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  std::size_t k = static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
-  if (k >= v.size()) k = v.size() - 1;
-  return v[k];
-}
 
 struct LcmDeleter {
   void operator()(lcm_t* l) const {
@@ -180,10 +173,10 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
                      {"max", cs.max_us()}};
   if (!res.wakeup_us.empty()) {
     j["wakeup_latency_us"] = {{"samples", res.wakeup_us.size()},
-                              {"p50", quantile(res.wakeup_us, 0.5)},
-                              {"p99", quantile(res.wakeup_us, 0.99)},
-                              {"p999", quantile(res.wakeup_us, 0.999)},
-                              {"max", quantile(res.wakeup_us, 1.0)}};
+                              {"p50", nearest_rank_quantile(res.wakeup_us, 0.5)},
+                              {"p99", nearest_rank_quantile(res.wakeup_us, 0.99)},
+                              {"p999", nearest_rank_quantile(res.wakeup_us, 0.999)},
+                              {"max", nearest_rank_quantile(res.wakeup_us, 1.0)}};
   } else {
     j["wakeup_latency_us"] = {{"p50_last_1024", ws.quantile(0.5)},
                               {"p99_last_1024", ws.quantile(0.99)},

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "evade/core/quantile.hpp"
 #include "evade/dynamics/events.hpp"
 #include "evade/sim/actuator_model.hpp"
 #include "evade/sim/sensor_model.hpp"
@@ -25,14 +26,6 @@ namespace evade::sim {
 namespace {
 
 constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
-
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  // Nearest rank (q in [0, 1]); lround, not +0.5 truncation, which rounds 0.49999999999999994 up.
-  const auto k = static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
-  return v[std::min(k, v.size() - 1)];
-}
 
 struct PendingMeas {
   std::int64_t at_us = 0;  // delivery
@@ -211,9 +204,9 @@ void RealtimeLoop::finish() {
   res_.commands_received = link_.commands_received();
   res_.commands_discarded_old = link_.commands_discarded_old();
   res_.commands_discarded_malformed = link_.commands_discarded_malformed();
-  res_.command_age_ms_p50 = quantile(ages_ms_, 0.50);
-  res_.command_age_ms_p99 = quantile(ages_ms_, 0.99);
-  res_.command_age_ms_max = quantile(ages_ms_, 1.0);
+  res_.command_age_ms_p50 = nearest_rank_quantile(ages_ms_, 0.50);
+  res_.command_age_ms_p99 = nearest_rank_quantile(ages_ms_, 0.99);
+  res_.command_age_ms_max = nearest_rank_quantile(ages_ms_, 1.0);
   res_.sim.has_final_status = link_.status(&res_.sim.final_status);
 }
 
