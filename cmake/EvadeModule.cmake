@@ -75,13 +75,16 @@ function(evade_add_test name)
   if(T_RUN_SERIAL)
     set(serial TRUE)  # timing- or network-sensitive: never beside another test
   endif()
-  # An empty LABELS value would vanish from the property list and make "RUN_SERIAL" a label.
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+    PROPERTIES TIMEOUT ${T_TIMEOUT} RUN_SERIAL ${serial})
+  # Labels are set after discovery, from a file ctest includes after the discovered tests:
+  # passed through gtest_discover_tests' PROPERTIES, a list of two labels ("conjunction;sgp4")
+  # is split into separate arguments, and every test ends up with no label at all.
   if(T_LABELS)
-    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-      PROPERTIES TIMEOUT ${T_TIMEOUT} LABELS "${T_LABELS}" RUN_SERIAL ${serial})
-  else()
-    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-      PROPERTIES TIMEOUT ${T_TIMEOUT} RUN_SERIAL ${serial})
+    set(labels_file ${CMAKE_CURRENT_BINARY_DIR}/${name}_labels.cmake)
+    file(WRITE ${labels_file}
+      "if(${name}_TESTS)\n  set_tests_properties(\${${name}_TESTS} PROPERTIES LABELS \"${T_LABELS}\")\nendif()\n")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${labels_file})
   endif()
 endfunction()
 

@@ -76,59 +76,66 @@ std::size_t levenshtein(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+struct CommandNames {
+  std::vector<std::string> top;    // top-level names ("sim", "plan")
+  std::vector<std::string> group;  // the second words of the group named by argv[1]
+  std::vector<std::string> pairs;  // "plan cam", ...
+};
+
+CommandNames command_names(const std::string& w1) {
+  const Registry& reg = registry();
+  CommandNames n;
+  for (std::size_t k = 0; k < reg.count; ++k) {
+    const Command& c = reg.commands[k];
+    if (std::find(n.top.begin(), n.top.end(), c.path[0]) == n.top.end()) {
+      n.top.emplace_back(c.path[0]);
+    }
+    if (c.path[1] == nullptr) continue;
+    n.pairs.push_back(std::string(c.path[0]) + " " + c.path[1]);
+    if (w1 == c.path[0]) n.group.emplace_back(c.path[1]);
+  }
+  return n;
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+// The name of `names` nearest to typed within an edit distance of 2, or "".
+std::string nearest(const std::string& typed, const std::vector<std::string>& names) {
+  constexpr std::size_t kMaxDistance = 2;
+  std::string best;
+  std::size_t best_d = kMaxDistance + 1;
+  for (const std::string& n : names) {
+    const std::size_t d = levenshtein(typed, n);
+    if (d < best_d) {
+      best_d = d;
+      best = n;
+    }
+  }
+  return best;
+}
+
 // When the command words of argv name no registered command ("evade scren", "evade plan
 // cma", "evade pln cam"), the message for it: the nearest registered name within an edit
 // distance of 2 as a suggestion; "" when the words are a command (the parse error is then
 // about something else, and CLI11's message says what).
 std::string unknown_command_message(int argc, char** argv) {
-  constexpr std::size_t kMaxDistance = 2;
   const auto word = [&](int i) -> std::string {
     return i < argc && argv[i][0] != '-' ? std::string(argv[i]) : std::string();
   };
   const std::string w1 = word(1), w2 = w1.empty() ? std::string() : word(2);
   if (w1.empty()) return "";
-  const Registry& reg = registry();
-  std::vector<std::string> top, group, pairs;  // top-level names, w1's commands, "g c"
-  for (std::size_t k = 0; k < reg.count; ++k) {
-    const Command& c = reg.commands[k];
-    if (std::find(top.begin(), top.end(), c.path[0]) == top.end()) top.emplace_back(c.path[0]);
-    if (c.path[1] == nullptr) continue;
-    pairs.push_back(std::string(c.path[0]) + " " + c.path[1]);
-    if (w1 == c.path[0]) group.emplace_back(c.path[1]);
-  }
-  std::string typed;
-  const std::vector<std::string>* names = nullptr;
-  if (std::find(top.begin(), top.end(), w1) != top.end()) {
-    // A known command; only a group's second word can be wrong ("plan cma").
-    if (group.empty() || w2.empty() || std::find(group.begin(), group.end(), w2) != group.end())
-      return "";
-    typed = w1 + " " + w2;
-    names = &pairs;
-  } else if (!w2.empty() && !pairs.empty()) {
-    // Two words: "pln cam" may be a two-word command with its first word mistyped.
-    typed = w1 + " " + w2;
-    names = &pairs;
-  }
-  std::string best;
-  std::size_t best_d = kMaxDistance + 1;
-  if (names != nullptr) {
-    for (const std::string& n : *names) {
-      const std::size_t d = levenshtein(typed, n);
-      if (d < best_d) {
-        best_d = d;
-        best = n;
-      }
-    }
-  }
-  if (best.empty() && std::find(top.begin(), top.end(), w1) == top.end()) {
+  const CommandNames names = command_names(w1);
+  const bool known_top = contains(names.top, w1);
+  // A known command: only a group's second word can be wrong ("plan cma").
+  if (known_top && (names.group.empty() || w2.empty() || contains(names.group, w2))) return "";
+  std::string typed = w1 + " " + w2;
+  // Two words: "pln cam" may also be a two-word command with its first word mistyped.
+  std::string best = w2.empty() ? std::string() : nearest(typed, names.pairs);
+  if (best.empty() && !known_top) {
     typed = w1;
-    for (const std::string& n : top) {
-      const std::size_t d = levenshtein(w1, n);
-      if (d < best_d) {
-        best_d = d;
-        best = n;
-      }
-    }
+    best = nearest(w1, names.top);
   }
   std::string msg = "evade: unknown command '" + typed + "'";
   return best.empty() ? msg + " (see evade --help)" : msg + "; did you mean '" + best + "'?";
@@ -151,6 +158,46 @@ std::pair<std::string, std::string> first_unrecognized(const CLI::App& app,
 
 // Diagnostics go to stderr; a failed print there has no recovery (there is nowhere else to
 // report it), so the results of these std::fprintf(stderr, ...) are discarded explicitly.
+
+// The exit code for a CLI11 parse error. --help and --version are ParseErrors too (exit 0);
+// any other is bad input (2). A mistyped command reaches here as "A subcommand is required"
+// (or an unexpected argument): say which word is no command, and which command was probably
+// meant; a mistyped flag: name it, before any complaint about a missing one.
+int parse_error_exit(CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
+  if (e.get_exit_code() != 0) {
+    const std::string unknown = unknown_command_message(argc, argv);
+    if (!unknown.empty()) {
+      (void)std::fprintf(stderr, "%s\n", unknown.c_str());
+      return 2;
+    }
+    const auto [flag, cmd] = first_unrecognized(app, "evade");
+    if (!flag.empty()) {
+      (void)std::fprintf(stderr, "%s: unknown option '%s' (see %s --help)\n", cmd.c_str(),
+                         flag.c_str(), cmd.c_str());
+      return 2;
+    }
+  }
+  const int rc = app.exit(e);
+  return rc == 0 ? 0 : 2;
+}
+
+// Runs the parsed command; bad input (ConfigError, invalid_argument) exits 2.
+int run_parsed(const std::vector<std::pair<CLI::App*, Runner>>& runners) {
+  try {
+    for (const auto& [sub, run] : runners) {
+      if (sub->parsed()) return run();
+    }
+  } catch (const config::ConfigError& e) {
+    (void)std::fprintf(stderr, "evade: error: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    (void)std::fprintf(stderr, "evade: invalid input: %s\n", e.what());
+    return 2;
+  }
+  (void)std::fprintf(stderr, "evade: no command given (see --help)\n");
+  return 2;
+}
+
 int run_cli(int argc, char** argv) {
   if (registry().rejected) {
     (void)std::fprintf(stderr, "evade: failed: a command registration was rejected (a field is "
@@ -165,39 +212,9 @@ int run_cli(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help and --version are ParseErrors too (exit 0); any other is bad input. A mistyped
-    // command reaches here as "A subcommand is required" (or an unexpected argument): say
-    // which word is no command, and which command was probably meant; a mistyped flag: name
-    // it, before any complaint about a missing one.
-    if (e.get_exit_code() != 0) {
-      const std::string unknown = unknown_command_message(argc, argv);
-      if (!unknown.empty()) {
-        (void)std::fprintf(stderr, "%s\n", unknown.c_str());
-        return 2;
-      }
-      const auto [flag, cmd] = first_unrecognized(app, "evade");
-      if (!flag.empty()) {
-        (void)std::fprintf(stderr, "%s: unknown option '%s' (see %s --help)\n", cmd.c_str(),
-                           flag.c_str(), cmd.c_str());
-        return 2;
-      }
-    }
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
+    return parse_error_exit(app, e, argc, argv);
   }
-  try {
-    for (const auto& [sub, run] : runners) {
-      if (sub->parsed()) return run();
-    }
-  } catch (const config::ConfigError& e) {
-    (void)std::fprintf(stderr, "evade: error: %s\n", e.what());
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    (void)std::fprintf(stderr, "evade: invalid input: %s\n", e.what());
-    return 2;
-  }
-  (void)std::fprintf(stderr, "evade: no command given (see --help)\n");
-  return 2;
+  return run_parsed(runners);
 }
 
 }  // namespace

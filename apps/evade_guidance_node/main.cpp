@@ -173,10 +173,10 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
                      {"max", cs.max_us()}};
   if (!res.wakeup_us.empty()) {
     j["wakeup_latency_us"] = {{"samples", res.wakeup_us.size()},
-                              {"p50", nearest_rank_quantile(res.wakeup_us, 0.5)},
-                              {"p99", nearest_rank_quantile(res.wakeup_us, 0.99)},
-                              {"p999", nearest_rank_quantile(res.wakeup_us, 0.999)},
-                              {"max", nearest_rank_quantile(res.wakeup_us, 1.0)}};
+                              {"p50", evade::nearest_rank_quantile(res.wakeup_us, 0.5)},
+                              {"p99", evade::nearest_rank_quantile(res.wakeup_us, 0.99)},
+                              {"p999", evade::nearest_rank_quantile(res.wakeup_us, 0.999)},
+                              {"max", evade::nearest_rank_quantile(res.wakeup_us, 1.0)}};
   } else {
     j["wakeup_latency_us"] = {{"p50_last_1024", ws.quantile(0.5)},
                               {"p99_last_1024", ws.quantile(0.99)},
@@ -243,7 +243,6 @@ int node_main(int argc, char** argv) {
   node::add_options(app, opts);
   try {
     app.parse(argc, argv);
-    node::note_given(app, opts);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;

@@ -81,6 +81,33 @@ bool try_realtime(int priority) {
   return ok;
 }
 
+namespace {
+
+// The wake-up after the deadline: its lateness recorded in the node's window and, while
+// there is room reserved for it, in res. Returns the wake-up time [ns, CLOCK_MONOTONIC].
+std::int64_t record_wakeup(guidance_lcm::GuidanceNode& node, std::int64_t deadline_ns,
+                           LoopResult* res) {
+  const std::int64_t wake = now_ns(CLOCK_MONOTONIC);
+  const double late_us = static_cast<double>(wake - deadline_ns) * 1e-3;
+  node.record_wakeup_latency(late_us);
+  if (res->wakeup_us.size() < res->wakeup_us.capacity()) res->wakeup_us.push_back(late_us);
+  return wake;
+}
+
+// One cycle after the wake-up at wake_ns: drain the inputs, step, persist. False when
+// draining failed (the loop ends).
+bool serve_cycle(guidance_lcm::GuidanceNode& node, std::int64_t wake_ns) {
+  if (node.drain() < 0) return false;
+  node.run_cycle(now_ns(CLOCK_REALTIME) / 1000);
+  node.record_compute_time(static_cast<double>(now_ns(CLOCK_MONOTONIC) - wake_ns) * 1e-3);
+  // Between cycles (AUTH-4): a command that advanced the anti-replay state waits for this
+  // write; a failure is counted by the node and refuses the commands waiting on it.
+  (void)node.persist_auth_state();
+  return true;
+}
+
+}  // namespace
+
 LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, const LoopLimits& lim,
                           const volatile std::sig_atomic_t* stop) {
   LoopResult res;
@@ -97,20 +124,11 @@ LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, cons
     const timespec ts = to_timespec(deadline);
     const int rc = clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr);
     if (rc == EINTR) continue;  // a signal: the loop condition decides
-    const std::int64_t wake = now_ns(CLOCK_MONOTONIC);
-    const double late_us = static_cast<double>(wake - deadline) * 1e-3;
-    node.record_wakeup_latency(late_us);
-    if (res.wakeup_us.size() < res.wakeup_us.capacity()) res.wakeup_us.push_back(late_us);
-
-    if (node.drain() < 0) {
+    const std::int64_t wake = record_wakeup(node, deadline, &res);
+    if (!serve_cycle(node, wake)) {
       end_on_drain_failure(lim, *stop != 0, &res);
       break;
     }
-    node.run_cycle(now_ns(CLOCK_REALTIME) / 1000);
-    node.record_compute_time(static_cast<double>(now_ns(CLOCK_MONOTONIC) - wake) * 1e-3);
-    // Between cycles (AUTH-4): a command that advanced the anti-replay state waits for this
-    // write; a failure is counted by the node and refuses the commands waiting on it.
-    (void)node.persist_auth_state();
     const std::int64_t done = now_ns(CLOCK_MONOTONIC);
 
     deadline += period_ns;

@@ -6,6 +6,7 @@
 #include <time.h>
 
 #include "evade/auth/key_file.hpp"
+#include "param_flag_option.hpp"
 
 #include "evade/config/read_params.hpp"
 #include "evade/config/scenario.hpp"
@@ -14,19 +15,51 @@
 
 namespace evade::node {
 
+namespace {
+
+template <class Cfg>
+void add_table_flag(CLI::App& app, const ParamTable<Cfg>& table, const char* prefix,
+                    const char* key, NodeOptions& o) {
+  const ParamSpec* spec = config::find_param_spec(table, prefix, key);
+  if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
+  (void)cli::add_param_flag(app, key, *spec, &o.param_overrides);  // registered on app
+}
+
+// The flags of the parameters the node reads (evade/config/param_flags.hpp): guidance.* and
+// node.* keys, declared in their tables.
+void add_param_flags(CLI::App& app, NodeOptions& o) {
+  for (const char* key : {"guidance.rate_hz", "guidance.stale_limit_s", "guidance.max_accel_mps2"}) {
+    add_table_flag(app, guidance::guidance_params(), "guidance.", key, o);
+  }
+  for (const char* key : {"node.status_divider", "node.queue_capacity"}) {
+    add_table_flag(app, guidance_lcm::node_params(), "node.", key, o);
+  }
+}
+
+void add_auth_options(CLI::App& app, NodeOptions& o) {
+  app.add_option("--keys", o.key_files,
+                 "key file written by `evade keygen` (mode 0600; repeatable): command and sensor "
+                 "keys (docs/SECURITY.md)");
+  app.add_option("--auth-state", o.auth_state,
+                 "file of the persisted key states and command ARSNs (required with --keys)");
+  app.add_option("--auth-commands", o.auth_commands,
+                 "required|off: plans and arm commands must be signed = node.auth.plan_required, "
+                 "node.auth.arm_required (default required)")
+      ->check(CLI::IsMember({"required", "off"}));
+  app.add_option("--auth-sensors", o.auth_sensors,
+                 "required|off: nav, angles and sim-clock messages must be signed = "
+                 "node.auth.nav_required, .angles_required, .clock_required (default off)")
+      ->check(CLI::IsMember({"required", "off"}));
+}
+
+}  // namespace
+
 void add_options(CLI::App& app, NodeOptions& o) {
   app.add_option("--lcm-url", o.lcm_url, "LCM provider URL (e.g. udpm://239.255.76.67:7667?ttl=0, "
                                           "memq://, file:///path.log?speed=0)");
   app.add_option("--out-lcm-url", o.out_lcm_url,
                  "publish command/status on this URL instead (e.g. file:///out.log?mode=w)");
-  const char* help[] = {"loop rate = guidance.rate_hz [Hz]",
-                        "input stale limit = guidance.stale_limit_s [s]",
-                        "maximum acceleration = guidance.max_accel_mps2 [m/s^2]",
-                        "publish status every N cycles = node.status_divider [-]",
-                        "bounded input queue capacity = node.queue_capacity [-]"};
-  for (std::size_t i = 0; i < o.params.size(); ++i) {
-    app.add_option(o.params[i].flag, o.params[i].value, help[i]);
-  }
+  add_param_flags(app, o);
   app.add_flag("--lockstep", o.lockstep, "run one cycle per evade_sim_clock_t tick");
   app.add_flag("--realtime", o.realtime, "try SCHED_FIFO and mlockall (continues if refused)");
   app.add_option("--rt-priority", o.rt_priority, "SCHED_FIFO priority [-]")
@@ -44,23 +77,7 @@ void add_options(CLI::App& app, NodeOptions& o) {
   app.add_flag("--start-disarmed", o.start_disarmed, "start disarmed (evade_arm_t arms)");
   app.add_flag("--stats-json", o.stats_json, "print run statistics as JSON on stdout at exit");
   app.add_flag("--quiet", o.quiet, "no progress messages on stderr");
-  app.add_option("--keys", o.key_files,
-                 "key file written by `evade keygen` (mode 0600; repeatable): command and sensor "
-                 "keys (docs/SECURITY.md)");
-  app.add_option("--auth-state", o.auth_state,
-                 "file of the persisted key states and command ARSNs (required with --keys)");
-  app.add_option("--auth-commands", o.auth_commands,
-                 "required|off: plans and arm commands must be signed = node.auth.plan_required, "
-                 "node.auth.arm_required (default required)")
-      ->check(CLI::IsMember({"required", "off"}));
-  app.add_option("--auth-sensors", o.auth_sensors,
-                 "required|off: nav, angles and sim-clock messages must be signed = "
-                 "node.auth.nav_required, .angles_required, .clock_required (default off)")
-      ->check(CLI::IsMember({"required", "off"}));
-}
-
-void note_given(const CLI::App& app, NodeOptions& o) {
-  for (ParamFlag& f : o.params) f.given = app.count(f.flag) > 0;
+  add_auth_options(app, o);
 }
 
 namespace {
@@ -71,11 +88,12 @@ void read_node_params(const config::Scenario& sc, guidance_lcm::NodeConfig* c) {
   config::read_params(sc, "node.", guidance_lcm::node_params(), c);
 }
 
-// One flag, read through its key's table row: the error names the flag and the key.
-void apply_flag(const ParamFlag& f, guidance_lcm::NodeConfig* c) {
-  config::Scenario one = config::Scenario::empty(std::string("flag ") + f.flag);
-  one.apply_override(std::string(f.key) + "=" + param_value_text(f.value));
-  read_node_params(one, c);
+// The parameter flags given, read through their keys' tables (already checked at parse).
+void apply_flags(const NodeOptions& o, guidance_lcm::NodeConfig* c) {
+  if (o.param_overrides.empty()) return;
+  config::Scenario flags = config::Scenario::empty("command-line flags");
+  for (const std::string& kv : o.param_overrides) flags.apply_override(kv);
+  read_node_params(flags, c);
 }
 
 }  // namespace
@@ -92,9 +110,7 @@ guidance_lcm::NodeConfig make_node_config(const NodeOptions& o) {
     read_node_params(s, &c);
     s.check_all_used();
   }
-  for (const ParamFlag& f : o.params) {
-    if (f.given) apply_flag(f, &c);
-  }
+  apply_flags(o, &c);
   if (!o.auth_commands.empty()) {
     c.auth.plan_required = c.auth.arm_required = o.auth_commands == "required";
   }

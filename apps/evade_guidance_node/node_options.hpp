@@ -15,14 +15,6 @@
 
 namespace evade::node {
 
-/// A flag that sets a parameter, kept as given: applied (and checked) only if given.
-struct ParamFlag {
-  const char* flag;  ///< "--rate-hz"
-  const char* key;   ///< "guidance.rate_hz"
-  double value = 0.0;
-  bool given = false;
-};
-
 struct NodeOptions {
   std::string lcm_url;            ///< "" = LCM default (LCM_DEFAULT_URL or udpm)
   std::string out_lcm_url;        ///< separate URL for the outputs ("" = same as lcm_url)
@@ -41,19 +33,13 @@ struct NodeOptions {
   std::string auth_state;         ///< --auth-state: persisted key states and ARSNs (AUTH-4)
   std::string auth_commands;      ///< --auth-commands required|off (plan and arm channels)
   std::string auth_sensors;       ///< --auth-sensors required|off (nav, angles, sim clock)
-  std::vector<ParamFlag> params = {
-      {"--rate-hz", "guidance.rate_hz"},
-      {"--stale-limit-s", "guidance.stale_limit_s"},
-      {"--max-accel-mps2", "guidance.max_accel_mps2"},
-      {"--status-divider", "node.status_divider"},
-      {"--queue", "node.queue_capacity"},
-  };
+  /// The parameter flags given (--guidance-rate-hz, --stale-limit-s, --max-accel-mps2,
+  /// --status-divider, --queue-capacity), as "key=value" (evade/config/param_flags.hpp).
+  std::vector<std::string> param_overrides;
 };
 
 /// Registers the flags on app.
 void add_options(CLI::App& app, NodeOptions& o);
-/// Records which parameter flags were given (call after app.parse()).
-void note_given(const CLI::App& app, NodeOptions& o);
 /// Builds the node configuration. Throws config::ConfigError or std::invalid_argument with
 /// the key, the value and the allowed range.
 guidance_lcm::NodeConfig make_node_config(const NodeOptions& o);

@@ -64,6 +64,21 @@ StateFile::StateFile(std::string path) : path_(std::move(path)) {
   dir_path_ = slash == std::string::npos ? "." : (slash == 0 ? "/" : path_.substr(0, slash));
 }
 
+// One "key <id> <active|standby|retired> <arsn>" line into ring; throws naming the line.
+void StateFile::restore_line(const std::string& line, int line_no, KeyRing* ring) const {
+  std::istringstream in(line);
+  std::string word, state, extra;
+  long long id = 0, arsn = 0;
+  KeyState s = KeyState::kActive;
+  const bool read = static_cast<bool>(in >> word >> id >> state >> arsn) && !(in >> extra);
+  if (!read || word != "key" || !parse_state(state, &s) || id < 1 || id > 2147483647LL ||
+      arsn < 0) {
+    throw std::runtime_error("auth state file '" + path_ + "' line " + std::to_string(line_no) +
+                             ": expected 'key <id> <active|standby|retired> <arsn>'");
+  }
+  (void)ring->restore(static_cast<std::int32_t>(id), s, arsn);  // a key not loaded: ignored
+}
+
 void StateFile::load(KeyRing* ring) const {
   if (!enabled()) return;
   struct stat st {};
@@ -82,16 +97,7 @@ void StateFile::load(KeyRing* ring) const {
   int line_no = 1;
   while (std::getline(f, line)) {
     ++line_no;
-    std::istringstream in(line);
-    std::string word, state, extra;
-    long long id = 0, arsn = 0;
-    KeyState s = KeyState::kActive;
-    if (!(in >> word >> id >> state >> arsn) || (in >> extra) || word != "key" ||
-        !parse_state(state, &s) || id < 1 || id > 2147483647LL || arsn < 0) {
-      throw std::runtime_error("auth state file '" + path_ + "' line " + std::to_string(line_no) +
-                               ": expected 'key <id> <active|standby|retired> <arsn>'");
-    }
-    (void)ring->restore(static_cast<std::int32_t>(id), s, arsn);  // a key not loaded: ignored
+    restore_line(line, line_no, ring);
   }
 }
 

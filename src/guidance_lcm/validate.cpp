@@ -5,6 +5,7 @@
 #include "evade/guidance_lcm/validate.hpp"
 
 #include <cmath>
+#include <cstddef>
 
 #include "evade/guidance/angles_measurement.hpp"
 #include "evade/guidance_lcm/convert.hpp"
@@ -70,31 +71,25 @@ Reason validate(const evade_thrust_cmd_t& m) noexcept {
   return Reason::kOk;
 }
 
+namespace {
+
+// Names in the order of the enumerators of Reason (input_accounting.hpp); the static_assert
+// below keeps the two the same length.
+constexpr const char* kReasonNames[] = {
+    "ok",           "decode_failed",   "oversize",       "not_finite",
+    "out_of_range", "from_future",     "stale_utime",    "duplicate_seq",
+    "out_of_order_seq", "seq_jump",    "unsigned",       "unknown_key",
+    "bad_mac",      "standby_key",     "retired_key",    "wrong_key_role",
+    "too_short_for_trailer", "replayed_arsn", "verify_budget", "not_persisted"};
+static_assert(sizeof(kReasonNames) / sizeof(kReasonNames[0]) ==
+                  static_cast<std::size_t>(Reason::kCount),
+              "one name per Reason");
+
+}  // namespace
+
 const char* reason_name(Reason r) noexcept {
-  switch (r) {
-    case Reason::kOk: return "ok";
-    case Reason::kDecodeFailed: return "decode_failed";
-    case Reason::kOversize: return "oversize";
-    case Reason::kNotFinite: return "not_finite";
-    case Reason::kOutOfRange: return "out_of_range";
-    case Reason::kFromFuture: return "from_future";
-    case Reason::kStaleUtime: return "stale_utime";
-    case Reason::kDuplicateSeq: return "duplicate_seq";
-    case Reason::kOutOfOrderSeq: return "out_of_order_seq";
-    case Reason::kSeqJump: return "seq_jump";
-    case Reason::kUnsigned: return "unsigned";
-    case Reason::kUnknownKey: return "unknown_key";
-    case Reason::kBadMac: return "bad_mac";
-    case Reason::kStandbyKey: return "standby_key";
-    case Reason::kRetiredKey: return "retired_key";
-    case Reason::kWrongKeyRole: return "wrong_key_role";
-    case Reason::kTooShortForTrailer: return "too_short_for_trailer";
-    case Reason::kReplayedArsn: return "replayed_arsn";
-    case Reason::kVerifyBudget: return "verify_budget";
-    case Reason::kNotPersisted: return "not_persisted";
-    case Reason::kCount: break;
-  }
-  return "?";
+  const auto i = static_cast<std::size_t>(r);
+  return i < static_cast<std::size_t>(Reason::kCount) ? kReasonNames[i] : "?";
 }
 
 }  // namespace evade::guidance_lcm

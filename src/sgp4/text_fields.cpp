@@ -41,23 +41,36 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
+namespace {
+
+// Advances i past the digits of t from i; returns how many there were.
+std::size_t skip_digits(const std::string& t, std::size_t& i) {
+  const std::size_t from = i;
+  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i;
+  return i - from;
+}
+
+// Advances i past one '+' or '-' at i, if there is one.
+void skip_sign(const std::string& t, std::size_t& i) {
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+}
+
+}  // namespace
+
 bool parse_plain_decimal(const std::string& field, double& out) {
   const std::string t = trim(field);
   std::size_t i = 0;
-  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
-  std::size_t digits = 0;
-  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++digits;
+  skip_sign(t, i);
+  std::size_t digits = skip_digits(t, i);
   if (i < t.size() && t[i] == '.') {
     ++i;
-    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++digits;
+    digits += skip_digits(t, i);
   }
   if (digits == 0) return false;
   if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
     ++i;
-    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
-    std::size_t ed = 0;
-    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++ed;
-    if (ed == 0) return false;
+    skip_sign(t, i);
+    if (skip_digits(t, i) == 0) return false;
   }
   if (i != t.size()) return false;
   out = std::strtod(t.c_str(), nullptr);
@@ -90,39 +103,67 @@ bool parse_alpha5(const std::string& field, long& out) {
   return true;
 }
 
-bool parse_iso_epoch(const std::string& text, int& year, double& day_of_year) {
-  std::string t = trim(text);
-  if (!t.empty() && t.back() == 'Z') t.pop_back();
-  const std::size_t tpos = t.find('T');
-  if (tpos == std::string::npos) return false;
-  const std::string date = t.substr(0, tpos), time = t.substr(tpos + 1);
-  int doy = 0;
-  if (date.size() == 10 && date[4] == '-' && date[7] == '-' && all_digits(date.substr(0, 4)) &&
-      all_digits(date.substr(5, 2)) && all_digits(date.substr(8, 2))) {
-    year = static_cast<int>(digits_value(date.substr(0, 4)));
-    const auto month = static_cast<int>(digits_value(date.substr(5, 2)));
-    const auto day = static_cast<int>(digits_value(date.substr(8, 2)));
-    if (month < 1 || month > 12 || day < 1 || day > month_length(year, month)) return false;
-    doy = cumulative_days(year, month) + day;
-  } else if (date.size() == 8 && date[4] == '-' && all_digits(date.substr(0, 4)) && all_digits(date.substr(5, 3))) {
-    year = static_cast<int>(digits_value(date.substr(0, 4)));
-    doy = static_cast<int>(digits_value(date.substr(5, 3)));
-    if (doy < 1 || doy > cumulative_days(year, 12) + 31) return false;
-  } else {
+namespace {
+
+// "YYYY-MM-DD" into the year and the day of the year (1 = 1 January).
+bool parse_calendar_date(const std::string& date, int& year, int& doy) {
+  if (date.size() != 10 || date[4] != '-' || date[7] != '-' || !all_digits(date.substr(0, 4)) ||
+      !all_digits(date.substr(5, 2)) || !all_digits(date.substr(8, 2)))
     return false;
-  }
-  if (year < 1957 || year > 2099) return false;
+  year = static_cast<int>(digits_value(date.substr(0, 4)));
+  const auto month = static_cast<int>(digits_value(date.substr(5, 2)));
+  const auto day = static_cast<int>(digits_value(date.substr(8, 2)));
+  if (month < 1 || month > 12 || day < 1 || day > month_length(year, month)) return false;
+  doy = cumulative_days(year, month) + day;
+  return true;
+}
+
+// "YYYY-DDD" (ordinal date) into the year and the day of the year.
+bool parse_ordinal_date(const std::string& date, int& year, int& doy) {
+  if (date.size() != 8 || date[4] != '-' || !all_digits(date.substr(0, 4)) ||
+      !all_digits(date.substr(5, 3)))
+    return false;
+  year = static_cast<int>(digits_value(date.substr(0, 4)));
+  doy = static_cast<int>(digits_value(date.substr(5, 3)));
+  return doy >= 1 && doy <= cumulative_days(year, 12) + 31;
+}
+
+// "YYYY-MM-DD" or "YYYY-DDD" into the year and the day of the year (1 = 1 January).
+bool parse_iso_date(const std::string& date, int& year, int& doy) {
+  return date.size() == 10 ? parse_calendar_date(date, year, doy)
+                           : parse_ordinal_date(date, year, doy);
+}
+
+// "hh:mm:ss[.fff]" into seconds of the day [s].
+bool parse_iso_time(const std::string& time, double& seconds_of_day) {
   if (time.size() < 8 || time[2] != ':' || time[5] != ':' || !all_digits(time.substr(0, 2)) ||
       !all_digits(time.substr(3, 2)))
     return false;
   double sec = 0.0;
   const std::string secs = time.substr(6);
-  if (!all_digits(secs.substr(0, 2)) || !parse_plain_decimal(secs, sec) || secs.find_first_of("eE+-") != std::string::npos)
+  if (!all_digits(secs.substr(0, 2)) || !parse_plain_decimal(secs, sec) ||
+      secs.find_first_of("eE+-") != std::string::npos)
     return false;
   const auto hh = static_cast<int>(digits_value(time.substr(0, 2)));
   const auto mm = static_cast<int>(digits_value(time.substr(3, 2)));
   if (hh > 23 || mm > 59 || !(sec >= 0.0 && sec < 60.0)) return false;
-  day_of_year = doy + (hh * 3600.0 + mm * 60.0 + sec) / 86400.0;
+  seconds_of_day = hh * 3600.0 + mm * 60.0 + sec;
+  return true;
+}
+
+}  // namespace
+
+bool parse_iso_epoch(const std::string& text, int& year, double& day_of_year) {
+  std::string t = trim(text);
+  if (!t.empty() && t.back() == 'Z') t.pop_back();
+  const std::size_t tpos = t.find('T');
+  if (tpos == std::string::npos) return false;
+  int doy = 0;
+  double sod = 0.0;
+  if (!parse_iso_date(t.substr(0, tpos), year, doy)) return false;
+  if (year < 1957 || year > 2099) return false;
+  if (!parse_iso_time(t.substr(tpos + 1), sod)) return false;
+  day_of_year = doy + sod / 86400.0;
   return true;
 }
 

@@ -209,6 +209,11 @@ TEST(Validate, EveryRejectionReasonHasItsOwnName) {
   EXPECT_EQ(names.size(), static_cast<std::size_t>(Reason::kCount));
   EXPECT_EQ(names.count("decode_failed"), 1u);
   EXPECT_EQ(names.count("seq_jump"), 1u);
+  // The names are a table in enumerator order: the first, a middle and the last entry.
+  EXPECT_STREQ(reason_name(Reason::kOk), "ok");
+  EXPECT_STREQ(reason_name(Reason::kSeqJump), "seq_jump");
+  EXPECT_STREQ(reason_name(Reason::kBadMac), "bad_mac");
+  EXPECT_STREQ(reason_name(Reason::kNotPersisted), "not_persisted");
   EXPECT_STREQ(reason_name(Reason::kCount), "?");
 }
 

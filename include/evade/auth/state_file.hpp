@@ -36,6 +36,8 @@ class StateFile {
   int save(const KeyRing& ring) const noexcept;
 
  private:
+  void restore_line(const std::string& line, int line_no, KeyRing* ring) const;
+
   std::string path_;
   std::string tmp_path_;
   std::string dir_path_;

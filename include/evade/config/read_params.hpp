@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "evade/config/param_flags.hpp"
 #include "evade/config/scenario.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/core/param.hpp"
@@ -40,16 +41,28 @@ void require_params(const Scenario& sc, const std::string& prefix, const ParamTa
   }
 }
 
+/// The declaration of the full key prefix + row key in table, or nullptr.
+template <class Cfg>
+const ParamSpec* find_param_spec(const ParamTable<Cfg>& table, const std::string& prefix,
+                                 const std::string& full_key) {
+  for (const Param<Cfg>& p : table) {
+    if (prefix + p.spec.key == full_key) return &p.spec;
+  }
+  return nullptr;
+}
+
 /// The Earth model under "earth." (mu_m3ps2, j2, re_m), defaults from `defaults`.
 EarthModel read_earth(const Scenario& sc, const EarthModel& defaults = kEarthDefault);
 
 /// A Markdown table of a module's parameters (key with prefix, unit, default, range,
-/// meaning), the defaults read from a default-constructed Cfg ("(required)" where that
+/// meaning, and the command-line flag that sets it, if any), the defaults read from a
+/// default-constructed Cfg ("(required)" where that
 /// default is outside the range: the key must be given).
 template <class Cfg>
 std::string params_markdown(const std::string& prefix, const ParamTable<Cfg>& table,
                             const Cfg& defaults = Cfg{}) {
-  std::string md = "| key | unit | default | allowed | meaning |\n|---|---|---|---|---|\n";
+  std::string md =
+      "| key | unit | default | allowed | meaning | flag |\n|---|---|---|---|---|---|\n";
   for (const Param<Cfg>& p : table) {
     const double d = p.get(defaults);
     std::string def = param_value_text(d);
@@ -57,7 +70,8 @@ std::string params_markdown(const std::string& prefix, const ParamTable<Cfg>& ta
     if (!param_value_ok(p.spec, d)) def = "(required)";
     md.append("| `").append(prefix).append(p.spec.key).append("` | ").append(p.spec.unit);
     md.append(" | ").append(def).append(" | ").append(param_allowed_text(p.spec));
-    md.append(" | ").append(p.spec.meaning).append(" |\n");
+    md.append(" | ").append(p.spec.meaning).append(" | ");
+    md.append(param_flag_markdown(prefix + p.spec.key)).append(" |\n");
   }
   return md;
 }
