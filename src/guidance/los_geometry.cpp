@@ -33,14 +33,9 @@ Vec3 los_unit_rate_from_angle_rates(double elevation_rad, double azimuth_rad,
 void los_unit_and_rate_from_angles(double elevation_rad, double azimuth_rad,
                                    double elevation_rate_radps, double azimuth_rate_radps,
                                    Vec3* u_eci, Vec3* u_dot_eci_ps) {
-  const double ce = std::cos(elevation_rad);
-  const double se = std::sin(elevation_rad);
-  const double cb = std::cos(azimuth_rad);
-  const double sb = std::sin(azimuth_rad);
-  *u_eci = Vec3(cb * ce, sb * ce, se);     // eq. 13
-  const Vec3 y_s(-cb * se, -sb * se, ce);  // eq. 14
-  const Vec3 z_s(sb, -cb, 0.0);            // eq. 14
-  *u_dot_eci_ps = elevation_rate_radps * y_s - (azimuth_rate_radps * ce) * z_s;  // eq. 16–18
+  *u_eci = los_unit_from_angles(elevation_rad, azimuth_rad);  // eq. 13
+  *u_dot_eci_ps = los_unit_rate_from_angle_rates(elevation_rad, azimuth_rad,
+                                                 elevation_rate_radps, azimuth_rate_radps);
 }
 
 void los_from_relative(const Vec3& rel_r_eci_m, const Vec3& rel_v_eci_mps, Vec3* u_eci,

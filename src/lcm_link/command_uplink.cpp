@@ -19,6 +19,7 @@
 #include "evade/guidance/plan_executor.hpp"
 #include "evade/guidance_lcm/burn_plan_convert.hpp"
 #include "evade/guidance_lcm/channels.hpp"
+#include "evade/lcm_link/internal/status_watch.hpp"
 
 namespace evade::lcm_link {
 namespace {
@@ -45,22 +46,6 @@ const char* key_cmd_result_name(int code) {
     default: return "none";
   }
 }
-
-// The newest status the node published, decoded in LCM's callback (bytes only: nothing throws
-// through LCM's C dispatch).
-struct StatusWatch {
-  evade_guidance_status_t last{};
-  bool have = false;
-  static void on_status(const lcm_recv_buf_t* rbuf, const char*, void* user) {
-    auto* self = static_cast<StatusWatch*>(user);
-    evade_guidance_status_t m{};
-    if (m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) ==
-        static_cast<int>(rbuf->data_size)) {
-      self->last = m;
-      self->have = true;
-    }
-  }
-};
 
 // Verdict of a status for the command in flight: -1 not yet, else the outcome's code.
 using AckCheck = std::function<int(const evade_guidance_status_t&, UplinkResult*)>;

@@ -19,6 +19,7 @@
 #include "evade/guidance_lcm/convert.hpp"
 #include "evade/guidance_lcm/internal/raw_publisher.hpp"
 #include "evade/lcm_link/internal/command_filter.hpp"
+#include "evade/lcm_link/internal/status_watch.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
 namespace evade::lcm_link {
@@ -44,7 +45,7 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
     nav_pub_->set_signing_key(sensor_key);
     ang_pub_->set_signing_key(sensor_key);
     cmd_sub_ = lcm_subscribe(lcm_, kChanCmd, &RealtimeLcmLink::on_cmd, this);
-    st_sub_ = lcm_subscribe(lcm_, kChanStatus, &RealtimeLcmLink::on_status, this);
+    st_sub_ = lcm_subscribe(lcm_, kChanStatus, &StatusWatch::on_status, &status_);
     if (cmd_sub_ == nullptr || st_sub_ == nullptr)
       throw std::runtime_error("evade sim: cannot subscribe on LCM URL '" + url + "'");
   }
@@ -92,8 +93,8 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
     if (ang_pub_->publish(ang_msg_) != 0) fail("EVADE_ANGLES");
   }
   bool status(guidance::GuidanceStatus* out) const override {
-    if (!have_status_) return false;
-    from_lcm(status_, out);
+    if (!status_.have) return false;
+    from_lcm(status_.last, out);
     return true;
   }
   long commands_received() const override { return received_; }
@@ -118,15 +119,6 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
     self->newest_.received_utime_us = t;
     self->have_new_ = true;
   }
-  static void on_status(const lcm_recv_buf_t* rbuf, const char*, void* user) {
-    auto* self = static_cast<RealtimeLcmLink*>(user);
-    evade_guidance_status_t m{};
-    if (m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) ==
-        static_cast<int>(rbuf->data_size)) {
-      self->status_ = m;
-      self->have_status_ = true;
-    }
-  }
 
   std::string url_;
   lcm_t* lcm_;
@@ -143,8 +135,7 @@ class RealtimeLcmLink final : public sim::RealtimeLink {
   long received_ = 0;
   long discarded_old_ = 0, discarded_malformed_ = 0;
   std::int64_t last_seq_ = 0;
-  evade_guidance_status_t status_{};
-  bool have_status_ = false;
+  StatusWatch status_;  // the node's newest status
 };
 
 }  // namespace

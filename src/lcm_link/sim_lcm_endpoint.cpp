@@ -22,6 +22,7 @@
 
 #include <lcm/lcm.h>
 
+#include "evade/lcm_link/internal/status_watch.hpp"
 #include "evade/lcm_link/internal/command_filter.hpp"
 #include "evade/lcm_link/sim_lcm_endpoint.hpp"
 
@@ -68,7 +69,7 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
     ang_pub_->set_signing_key(sensor_key);
     clk_pub_->set_signing_key(sensor_key);
     cmd_sub_ = lcm_subscribe(lcm_, kChanCmd, &LcmEndpoint::on_cmd, this);
-    st_sub_ = lcm_subscribe(lcm_, kChanStatus, &LcmEndpoint::on_status, this);
+    st_sub_ = lcm_subscribe(lcm_, kChanStatus, &StatusWatch::on_status, &status_);
     if (cmd_sub_ == nullptr || st_sub_ == nullptr) {
       lcm_destroy(lcm_);
       throw std::runtime_error("evade sim: cannot subscribe on LCM URL '" + url + "'");
@@ -119,18 +120,18 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
     // wait for it too so status() describes this cycle.
     if (status_every_cycle_) {
       const std::int64_t st_deadline = mono_us() + 200000;
-      while (!(have_status_ && status_.utime == utime_us) && mono_us() < st_deadline) wait(10);
-      status_every_cycle_ = have_status_ && status_.utime == utime_us;
+      while (!(status_.have && status_.last.utime == utime_us) && mono_us() < st_deadline) wait(10);
+      status_every_cycle_ = status_.have && status_.last.utime == utime_us;
     } else {
       handle_ready();
-      status_every_cycle_ = have_status_ && status_.utime == utime_us;
+      status_every_cycle_ = status_.have && status_.last.utime == utime_us;
     }
     return latest_;
   }
 
   bool status(guidance::GuidanceStatus* out) const override {
-    if (!have_status_) return false;
-    from_lcm(status_, out);
+    if (!status_.have) return false;
+    from_lcm(status_.last, out);
     return true;
   }
 
@@ -173,15 +174,6 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
       ++self->bad_cmds_;  // the previous command stays in force
     }
   }
-  static void on_status(const lcm_recv_buf_t* rbuf, const char*, void* user) {
-    auto* self = static_cast<LcmEndpoint*>(user);
-    evade_guidance_status_t m{};
-    if (m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) ==
-        static_cast<int>(rbuf->data_size)) {
-      self->status_ = m;
-      self->have_status_ = true;
-    }
-  }
 
   std::string url_;
   lcm_t* lcm_;
@@ -201,8 +193,7 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
   bool have_cmd_ = false;
   std::int64_t last_cmd_seq_ = 0;
   bool answered_once_ = false;
-  evade_guidance_status_t status_{};
-  bool have_status_ = false;
+  StatusWatch status_;  // the node's newest status
   bool status_every_cycle_ = true;
   long bad_cmds_ = 0;
   double pace_factor_ = 0.0;  // 0: unpaced

@@ -70,12 +70,7 @@ Catalog read_gp_csv(const std::string& text, const std::string& source) {
     for (std::size_t k = 0; k < cells.size(); ++k)
       if (is_omm_keyword(header[k]) && !trim(cells[k].text).empty())
         rec.values[header[k]] = OmmValue{cells[k].text, no, cells[k].column};
-    try {
-      cat.objects.push_back(mean_elements_from_omm(rec, source));
-    } catch (const ReadError& e) {
-      cat.issues.push_back(e.issue);
-      ++cat.bad_entries;
-    }
+    add_omm_record(rec, source, &cat);
   }
   return cat;
 }

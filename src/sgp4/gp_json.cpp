@@ -94,12 +94,7 @@ Catalog read_gp_json(const std::string& text, const std::string& source) {
       const std::string t = v.is_string() ? v.get<std::string>() : v.dump();
       rec.values[key] = OmmValue{t, p.line, p.column};
     }
-    try {
-      cat.objects.push_back(mean_elements_from_omm(rec, source));
-    } catch (const ReadError& e) {
-      cat.issues.push_back(e.issue);
-      ++cat.bad_entries;
-    }
+    add_omm_record(rec, source, &cat);
   }
   return cat;
 }

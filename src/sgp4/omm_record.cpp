@@ -60,6 +60,15 @@ void check_metadata(const OmmRecord& rec, const std::string& source) {
 
 }  // namespace
 
+void add_omm_record(const OmmRecord& rec, const std::string& source, Catalog* cat) {
+  try {
+    cat->objects.push_back(mean_elements_from_omm(rec, source));
+  } catch (const ReadError& e) {
+    cat->issues.push_back(e.issue);
+    ++cat->bad_entries;
+  }
+}
+
 MeanElements mean_elements_from_omm(const OmmRecord& rec, const std::string& source) {
   check_metadata(rec, source);
   MeanElements m;

@@ -209,11 +209,12 @@ Catalog read_omm_xml(const std::string& text, const std::string& source) {
     rec.line = seg->line;
     try {
       collect(*seg, rec, source);
-      cat.objects.push_back(mean_elements_from_omm(rec, source));
     } catch (const ReadError& e) {
       cat.issues.push_back(e.issue);
       ++cat.bad_entries;
+      continue;
     }
+    add_omm_record(rec, source, &cat);
   }
   return cat;
 }

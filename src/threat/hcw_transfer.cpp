@@ -236,24 +236,12 @@ PrimerBound HcwTransfer::primer_bound(const Vec6& d) const {
   }
   const Vec3 u1 = unit_or_zero(dv1);
   const Vec3 u2 = unit_or_zero(dv2);
-  const Vec3 lr = rv_T_inv_.transpose() * (u1 - vv_T_.transpose() * u2);
-  const Vec3& lv = u2;
-  double best2 = 0.0;  // q >= 0: the first maximum wins, as with any negative start
+  Vec6 lambda;
+  lambda.head<3>() = rv_T_inv_.transpose() * (u1 - vv_T_.transpose() * u2);
+  lambda.tail<3>() = u2;
   int best_j = 0;
-  for (int j = 0; j <= kPrimerSamples; ++j) {
-    const Vec3 p = rv_s_[j].transpose() * lr + vv_s_[j].transpose() * lv;
-    const double q = p.squaredNorm();
-    if (q > best2) {
-      best2 = q;
-      best_j = j;
-    }
-  }
-  const double h = T_ / kPrimerSamples;
-  const double sqrt26 = std::sqrt(26.0);
-  const double p2_max = n_ * sqrt26 * lr.norm() + n_ * n_ * sqrt26 * lv.norm();
-  const double margin = h * h / 8.0 * p2_max;
   // λᵀd = u1ᵀΔv1 + u2ᵀΔv2 = J2; |p(0)| or |p(T)| is 1 unless both impulses vanish.
-  out.primer_max = std::max(1.0, std::sqrt(best2) + margin);
+  out.primer_max = std::max(1.0, certified_primer_max(lambda, &best_j));
   out.lower_bound_mps = out.two_impulse_cost_mps / out.primer_max;
   out.primer_argmax_s = T_ * best_j / kPrimerSamples;
   return out;

@@ -8,6 +8,8 @@
 // and CENTER_NAME EARTH.
 #pragma once
 
+#include "evade/sgp4/catalog.hpp"
+
 #include <map>
 #include <string>
 
@@ -29,6 +31,10 @@ struct OmmRecord {
 /// Converts one record; throws ReadError (catalog.hpp) naming the keyword, its line and
 /// column, and what was expected, for a missing or bad value.
 MeanElements mean_elements_from_omm(const OmmRecord& rec, const std::string& source);
+
+/// Converts rec into cat: its mean elements appended to cat->objects, or the ReadError the
+/// conversion throws as one issue (one bad entry).
+void add_omm_record(const OmmRecord& rec, const std::string& source, Catalog* cat);
 
 /// True for keywords of the OMM standard (header, metadata, mean elements, TLE parameters,
 /// spacecraft parameters, covariance, user-defined USER_DEFINED_*); the strict forms (KVN,
