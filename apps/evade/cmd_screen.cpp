@@ -7,31 +7,22 @@
 //                    (distributed::screen_distributed) and rank 0 prints the merged events.
 // Objects come from the scenario's `objects` list, a CSV file (--objects) or a seeded
 // synthetic LEO population (--population N --seed S); with --tle or --omm a catalog moving by
-// SGP4 is screened instead (cmd_screen_catalog.cpp). --json prints the result on stdout;
-// progress of long screens goes to stderr. The scenario is read by
-// conjunction::read_screen_scenario; I/O lives here; the screening library is pure.
-#include <algorithm>
-#include <chrono>
-#include <cstdint>
+// SGP4 is screened instead (cmd_screen_catalog.cpp). The screening, its JSON and its text are
+// the library's (conjunction/screen_command.hpp); here: flags, files, printing. --json
+// prints the result on stdout; progress of long screens goes to stderr.
 #include <cstdio>
 #include <fstream>
-#include <functional>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
-#include <thread>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
 #include "cmd_screen_catalog.hpp"
 #include "screen_cdm_out.hpp"
 #include "evade/conjunction/catalog.hpp"
-#include "evade/conjunction/paper_step.hpp"
-#include "evade/conjunction/population.hpp"
-#include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
-#include "evade/core/epoch.hpp"
+#include "evade/conjunction/screen_command.hpp"
 #include "evade/distributed/distributed_screen.hpp"
 
 namespace evade::cli {
@@ -92,152 +83,10 @@ void refuse_inapplicable(const Options& o) {
   }
 }
 
-std::string utc_of(double epoch_j2000_s, double t_s) {
-  return format_calendar_utc(calendar_from_seconds_since_j2000(epoch_j2000_s + t_s));
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("--objects: cannot open '" + path + "'");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
-struct Objects {
-  std::vector<SpaceObject> list;
-  std::string source;  ///< echoed as objects_source
-};
-
-// The objects: a synthetic population (--population), a CSV file (--objects) or the
-// scenario's `objects` list (marked used when another source replaces it).
-Objects load_objects(const Options& o, const config::Scenario& sc, const ScreenScenario& in) {
-  Objects ob;
-  if (o.population > 0) {
-    PopulationOptions pop;
-    pop.count = static_cast<std::size_t>(o.population);
-    pop.seed = static_cast<std::uint64_t>(o.seed);
-    pop.span_s = in.span_s;
-    pop.earth = in.earth;
-    ob.list = synthetic_population(pop);
-    ob.source = "synthetic population N=" + std::to_string(o.population) + " seed=" + std::to_string(o.seed);
-    (void)sc.list_size("objects");  // present but not a list is still an error
-    sc.mark_used("objects");
-  } else if (!o.objects_csv.empty()) {
-    ob.list = objects_from_csv(read_file(o.objects_csv), in.earth);
-    ob.source = o.objects_csv;
-    sc.mark_used("objects");
-  } else {
-    ob.list = objects_from_scenario(sc, in.earth);
-    ob.source = sc.source();
-  }
-  return ob;
-}
-
-nlohmann::json trace_json(const std::vector<TraceRow>& trace, double epoch_s) {
-  nlohmann::json tr = nlohmann::json::array();
-  for (const auto& row : trace) {
-    tr.push_back({{"t_s", row.t_s},
-                  {"utc", utc_of(epoch_s, row.t_s)},
-                  {"step_s", row.step_s},
-                  {"i", row.i},
-                  {"j", row.j},
-                  {"distance_m", row.distance_m},
-                  {"radial_speed_mps", row.radial_speed_mps},
-                  {"collision", row.collision},
-                  {"warning", row.warning}});
-  }
-  return tr;
-}
-
-// --method paper: the adaptive Step rule over every pair (steps and trace into `out`).
-std::vector<Conjunction> run_paper(const Options& o, const ScreenScenario& in,
-                                   const std::vector<SpaceObject>& objects, nlohmann::json& out) {
-  validate_objects(objects, in.earth);
-  if (objects.size() > 2000) {
-    throw std::invalid_argument("--method paper checks all N^2 pairs at every step: " +
-                                std::to_string(objects.size()) + " objects outside [2, 2000]");
-  }
-  Ephemeris eph(objects, in.gravity, in.earth, in.robust.integ);
-  std::function<void(double)> progress;
-  if (!o.quiet) progress = [](double f) { (void)std::fprintf(stderr, "\rscreen (paper): %5.1f %%", 100.0 * f); };
-  const PaperResult r = screen_paper(objects, in.span_s, in.paper_step, eph, o.trace, progress);
-  if (!o.quiet) (void)std::fprintf(stderr, "\n");
-  out["steps"] = r.steps;
-  if (o.trace) out["trace"] = trace_json(r.trace, in.epoch_j2000_s);
-  return r.events;
-}
-
-nlohmann::json stats_json(const ScreenStats& st, std::size_t n, const ScreenOptions& so, int ranks) {
-  return {{"grid_steps", st.steps},
-          {"pairs_checked", st.pairs_checked},
-          {"candidates", st.candidates},
-          {"narrow_phase_intervals", st.refined},
-          {"root_solves", st.root_solves},
-          {"pairs_after_apogee_perigee", st.pairs_after_apogee_perigee},
-          {"unproven_leaves", st.unproven_leaves},
-          {"all_pairs", n * (n - 1) / 2},
-          {"threads", so.threads},
-          {"ranks", ranks},
-          {"grid_step_s", so.step_s > 0.0 ? so.step_s : auto_step_s(n)}};
-}
-
-// --method robust: the screening that cannot miss (steps and stats into `out`).
-std::vector<Conjunction> run_robust(const Options& o, const ScreenScenario& in,
-                                    const std::vector<SpaceObject>& objects, nlohmann::json& out,
-                                    const distributed::MpiSession& mpi) {
-  if (o.trace) throw std::invalid_argument("--trace: only with --method paper");
-  ScreenOptions so = in.robust;
-  so.threads = o.threads > 0 ? o.threads
-                             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  if (!o.quiet && mpi.rank() == 0) {
-    (void)std::fprintf(stderr, "screen: %zu objects, %.0f s, threshold %.1f m, step %.1f s, %d threads, %d ranks\n",
-                       objects.size(), in.span_s, so.threshold_m,
-                       so.step_s > 0.0 ? so.step_s : auto_step_s(objects.size()), so.threads, mpi.size());
-    so.progress = [](double f) { (void)std::fprintf(stderr, "\rscreen: %5.1f %%", 100.0 * f); };
-  }
-  const ScreenResult r = distributed::screen_distributed(objects, in.span_s, so, mpi);
-  if (!o.quiet && mpi.rank() == 0) (void)std::fprintf(stderr, "\n");
-  out["steps"] = r.stats.steps;
-  out["stats"] = stats_json(r.stats, objects.size(), so, mpi.size());
-  return r.events;
-}
-
-nlohmann::json events_json(const std::vector<Conjunction>& events,
-                           const std::vector<SpaceObject>& objects, double epoch_s) {
-  nlohmann::json ev = nlohmann::json::array();
-  for (const auto& c : events) {
-    ev.push_back({{"i", c.i},
-                  {"j", c.j},
-                  {"name_i", objects[c.i].name},
-                  {"name_j", objects[c.j].name},
-                  {"tca_s", c.tca_s},
-                  {"tca_utc", utc_of(epoch_s, c.tca_s)},
-                  {"miss_m", c.miss_m},
-                  {"rel_speed_mps", c.rel_speed_mps},
-                  {"collision", c.collision},
-                  {"warning", c.warning}});
-  }
-  return ev;
-}
-
-void write_csv(const std::string& path, const std::vector<Conjunction>& events,
-               const std::vector<SpaceObject>& objects) {
+void write_csv(const std::string& path, const ScreenObjectsResult& r) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error("--csv: cannot write '" + path + "'");
-  f << events_to_csv(events, objects);
-}
-
-void print_text(const Options& o, const ScreenScenario& in, const std::vector<SpaceObject>& objects,
-                const std::vector<Conjunction>& events, long steps, double wall_s) {
-  std::printf("%s screening of %zu objects over %.0f s: %zu events, %ld steps, %.3f s\n",
-              o.method.c_str(), objects.size(), in.span_s, events.size(), steps, wall_s);
-  for (const auto& c : events) {
-    std::printf("  %-10s %-10s TCA %s  miss %12.3f m  v_rel %9.3f m/s%s%s\n",
-                objects[c.i].name.c_str(), objects[c.j].name.c_str(),
-                utc_of(in.epoch_j2000_s, c.tca_s).c_str(), c.miss_m, c.rel_speed_mps,
-                c.collision ? "  COLLISION" : "", c.warning ? "  WARNING" : "");
-  }
+  f << events_to_csv(r.events, r.objects);
 }
 
 int run_catalog(const Options& o) {
@@ -248,49 +97,48 @@ int run_catalog(const Options& o) {
   c.threads = o.threads;
   c.json = o.common.json;
   c.quiet = o.quiet;
-  prepare_cdm_out(c.cdm, false);
-  return run_screen_catalog(c);
+  assessment::check_screen_cdm_options(screen_cdm_options(c.cdm), false);
+  create_cdm_dir(c.cdm.dir);
+  return run_catalog_screen(c);
+}
+
+// The request of a screen of scenario, --objects or --population objects.
+ScreenObjectsRequest objects_request(const Options& o, const config::Scenario& sc) {
+  ScreenObjectsSource src;
+  src.method = o.method;
+  src.population = o.population;
+  src.seed = o.seed;
+  if (o.population <= 0 && !o.objects_csv.empty()) {
+    src.objects_csv_path = o.objects_csv;
+    src.objects_csv_text = read_text_file(o.objects_csv, "--objects");
+  }
+  ScreenObjectsRequest req = read_screen_objects_request(sc, src);
+  req.trace = o.trace;
+  req.threads = o.threads;
+  req.cdm = screen_cdm_options(o.catalog.cdm);
+  return req;
 }
 
 int run(const Options& o) {
   refuse_inapplicable(o);
   if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) return run_catalog(o);
   const config::Scenario sc = load_scenario(o.common);
-  const ScreenScenario in = read_screen_scenario(sc);
-  const Objects ob = load_objects(o, sc, in);
-  if (o.method == "paper") sc.mark_used("robust");
-  sc.check_all_used();
-  if (!o.catalog.cdm.dir.empty() && o.method != "robust")
-    throw std::invalid_argument("--cdm-out: only with --method robust (the paper method flags samples, not TCAs)");
-  prepare_cdm_out(o.catalog.cdm, true);
+  ScreenObjectsRequest req = objects_request(o, sc);
+  req.validate();
+  create_cdm_dir(req.cdm.dir);
   const distributed::MpiSession mpi;  // one process unless started by mpirun
-
-  nlohmann::json out;
-  out["command"] = "screen";
-  out["method"] = o.method;
-  out["objects_source"] = ob.source;
-  out["objects"] = ob.list.size();
-  out["epoch_utc"] = in.epoch_utc;
-  out["span_s"] = in.span_s;
-  out["scenario"] = sc.used();
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<Conjunction> events =
-      o.method == "paper" ? run_paper(o, in, ob.list, out) : run_robust(o, in, ob.list, out, mpi);
-  const double wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  req.ranks = mpi.size();
+  req.rank = mpi.rank();
+  req.robust_screener = [&mpi](const std::vector<SpaceObject>& objects, double span_s, const ScreenOptions& so) {
+    return distributed::screen_distributed(objects, span_s, so, mpi);
+  };
+  if (!o.quiet && mpi.rank() == 0) req.progress = [](const std::string& s) { (void)std::fputs(s.c_str(), stderr); };
+  const ScreenObjectsResult r = run_screen_objects(req);
   if (mpi.rank() != 0) return 0;  // rank 0 holds the merged result and prints it
-  out["wall_time_s"] = wall_s;
-  out["events"] = events_json(events, ob.list, in.epoch_j2000_s);
-  if (!o.csv_path.empty()) write_csv(o.csv_path, events, ob.list);
-  if (!o.catalog.cdm.dir.empty()) {
-    const CdmRunInfo run{in.epoch_j2000_s, in.span_s, in.robust.threshold_m, "objects " + ob.source};
-    out["cdm"] = write_population_cdms(o.catalog.cdm, run, events, ob.list, in.robust);
-  }
-  if (o.common.json) {
-    print_json(out);
-  } else {
-    print_text(o, in, ob.list, events, out["steps"].get<long>(), wall_s);
-  }
+  if (!o.csv_path.empty()) write_csv(o.csv_path, r);
+  if (r.cdm) write_cdm_files(*r.cdm);
+  if (o.common.json) print_json(to_json(r));
+  else (void)std::fputs(to_text(r).c_str(), stdout);
   return 0;
 }
 

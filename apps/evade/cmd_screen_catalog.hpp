@@ -1,5 +1,6 @@
 // `evade screen --tle FILE | --omm FILE`: the catalog path of `evade screen` (cmd_screen.cpp
-// registers the flags and hands over here): every object moves by SGP4.
+// registers the flags and hands over here): reads the file, calls
+// conjunction::run_screen_catalog (every object moves by SGP4), writes the CDMs and prints.
 #pragma once
 
 #include <string>
@@ -26,6 +27,6 @@ struct CatalogScreenOptions {
 /// least one pair could be screened (bad entries and rejected element sets are listed on
 /// stderr and in the JSON); std::invalid_argument (exit 2) for bad flags, an unknown
 /// --primary or a file with no usable element set.
-int run_screen_catalog(const CatalogScreenOptions& o);
+int run_catalog_screen(const CatalogScreenOptions& o);
 
 }  // namespace evade::cli

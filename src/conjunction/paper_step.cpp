@@ -75,88 +75,116 @@ double paper_next_step_s(const PairSample& p, double h_now_s, const PaperStepPar
   return std::max(h, prm.h_min_s);
 }
 
-PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
-                         const PaperStepParams& prm, Ephemeris& eph, bool record_trace,
-                         const std::function<void(double)>& progress) {
+namespace {
+
+// Per pair: the best warning sample of the current encounter not yet reported.
+struct Pending {
+  bool active = false;        // approach phase with a warning sample
+  bool collided = false;      // a collision was flagged in this approach phase
+  bool in_collision = false;  // the previous sample was a collision sample
+  Conjunction best;
+};
+
+void check_paper_inputs(const std::vector<SpaceObject>& objects, double span_s,
+                        const PaperStepParams& prm, const Ephemeris& eph) {
   prm.validate();
   if (!(span_s >= 0.0) || !std::isfinite(span_s)) {
     throw std::invalid_argument("span_s = " + std::to_string(span_s) + " outside [0, inf)");
   }
   if (eph.size() != objects.size()) throw std::invalid_argument("screen_paper: ephemeris size");
+}
+
+// One event per run of consecutive collision samples (the paper's flag), and one per
+// approach phase that entered the warning radius without a collision sample.
+void record_pair_sample(const PairSample& p, const Conjunction& c, Pending& pd,
+                        std::vector<Conjunction>& events) {
+  if (p.collision && !pd.in_collision) {
+    events.push_back(c);
+    pd.collided = true;
+  }
+  pd.in_collision = p.collision;
+  const bool approaching = p.radial_speed_mps < 0.0;
+  if (p.warning && !p.collision && (approaching || pd.active)) {
+    if (!pd.active || p.distance_m < pd.best.miss_m) pd.best = c;
+    pd.active = true;
+  }
+  if (!approaching) {  // the approach phase (if any) is over
+    if (pd.active && !pd.collided) events.push_back(pd.best);
+    const bool in_collision = pd.in_collision;
+    pd = Pending{};
+    pd.in_collision = in_collision;
+  }
+}
+
+// Every pair at the sample t (states s, reached by step h_now): events into `events`, the
+// trace row (the pair setting the next step; ties: the closest) into `row`. Returns the
+// next step, the smallest over the pairs.
+double sample_all_pairs(const std::vector<SpaceObject>& objects, const PaperStepParams& prm,
+                        const std::vector<StateEci>& s, double t, double h_now,
+                        std::vector<Pending>& pending, std::vector<Conjunction>& events,
+                        TraceRow& row) {
+  const std::size_t n = objects.size();
+  double h_next = prm.h_sim_s;
+  bool first = true;
+  std::size_t k = 0;  // pair index of (i, j), lexicographic
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j, ++k) {
+      const double rc = collision_radius_m(objects[i], objects[j]);
+      const PairSample p = sample_pair(s[i], s[j], rc, prm.n_warning);
+      const double h_pair = paper_next_step_s(p, h_now, prm);
+      record_pair_sample(p, Conjunction{i, j, t, p.distance_m, p.rel_speed_mps, p.collision, p.warning},
+                         pending[k], events);
+      if (first || h_pair < h_next || (h_pair == h_next && p.distance_m < row.distance_m)) {
+        h_next = std::min(h_next, h_pair);
+        row.i = i;
+        row.j = j;
+        row.distance_m = p.distance_m;
+        row.radial_speed_mps = p.radial_speed_mps;
+        row.collision = p.collision;
+        row.warning = p.warning;
+        first = false;
+      }
+    }
+  }
+  return h_next;
+}
+
+void report_progress(const std::function<void(double)>& progress, double t, double t_next,
+                     double span_s) {
+  if (progress && span_s > 0.0 && std::floor(100.0 * t_next / span_s) > std::floor(100.0 * t / span_s)) {
+    progress(t_next / span_s);
+  }
+}
+
+}  // namespace
+
+PaperResult screen_paper(const std::vector<SpaceObject>& objects, double span_s,
+                         const PaperStepParams& prm, Ephemeris& eph, bool record_trace,
+                         const std::function<void(double)>& progress) {
+  check_paper_inputs(objects, span_s, prm, eph);
   const std::size_t n = objects.size();
   PaperResult res;
   if (n < 2) return res;
-  // Per pair: the best warning sample of the current encounter not yet reported.
-  struct Pending {
-    bool active = false;        // approach phase with a warning sample
-    bool collided = false;      // a collision was flagged in this approach phase
-    bool in_collision = false;  // the previous sample was a collision sample
-    Conjunction best;
-  };
   std::vector<Pending> pending(n * (n - 1) / 2);
-  auto pair_index = [n](std::size_t i, std::size_t j) { return i * (2 * n - i - 1) / 2 + (j - i - 1); };
   std::vector<StateEci> s;
   double t = 0.0;
   double h_now = prm.h_sim_s;
   for (;;) {
     eph.states_at(t, s);
-    double h_next = prm.h_sim_s;
     TraceRow row;
     row.t_s = t;
     row.step_s = h_now;
-    bool first = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = i + 1; j < n; ++j) {
-        const double rc = collision_radius_m(objects[i], objects[j]);
-        const PairSample p = sample_pair(s[i], s[j], rc, prm.n_warning);
-        const double h_pair = paper_next_step_s(p, h_now, prm);
-        Pending& pd = pending[pair_index(i, j)];
-        Conjunction c{i, j, t, p.distance_m, p.rel_speed_mps, p.collision, p.warning};
-        // One event per run of consecutive collision samples (the paper's flag), and one
-        // per approach phase that entered the warning radius without a collision sample.
-        if (p.collision && !pd.in_collision) {
-          res.events.push_back(c);
-          pd.collided = true;
-        }
-        pd.in_collision = p.collision;
-        const bool approaching = p.radial_speed_mps < 0.0;
-        if (p.warning && !p.collision && (approaching || pd.active)) {
-          if (!pd.active || p.distance_m < pd.best.miss_m) pd.best = c;
-          pd.active = true;
-        }
-        if (!approaching) {  // the approach phase (if any) is over
-          if (pd.active && !pd.collided) res.events.push_back(pd.best);
-          const bool in_collision = pd.in_collision;
-          pd = Pending{};
-          pd.in_collision = in_collision;
-        }
-        if (first || h_pair < h_next || (h_pair == h_next && p.distance_m < row.distance_m)) {
-          h_next = std::min(h_next, h_pair);
-          row.i = i;
-          row.j = j;
-          row.distance_m = p.distance_m;
-          row.radial_speed_mps = p.radial_speed_mps;
-          row.collision = p.collision;
-          row.warning = p.warning;
-          first = false;
-        }
-      }
-    }
+    const double h_next = sample_all_pairs(objects, prm, s, t, h_now, pending, res.events, row);
     if (record_trace) res.trace.push_back(row);
     const double t_next = t + h_next;
     if (t_next > span_s) break;
-    if (progress && span_s > 0.0 && std::floor(100.0 * t_next / span_s) > std::floor(100.0 * t / span_s)) {
-      progress(t_next / span_s);
-    }
+    report_progress(progress, t, t_next, span_s);
     t = t_next;
     h_now = h_next;
     ++res.steps;
   }
-  for (std::size_t i = 0; i < n; ++i) {  // encounters still open at the end of the span
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const Pending& pd = pending[pair_index(i, j)];
-      if (pd.active && !pd.collided) res.events.push_back(pd.best);
-    }
+  for (const Pending& pd : pending) {  // encounters still open at the end of the span
+    if (pd.active && !pd.collided) res.events.push_back(pd.best);
   }
   std::sort(res.events.begin(), res.events.end(), [](const Conjunction& a, const Conjunction& b) {
     return a.tca_s < b.tca_s || (a.tca_s == b.tca_s && (a.i < b.i || (a.i == b.i && a.j < b.j)));

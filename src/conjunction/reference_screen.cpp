@@ -145,6 +145,36 @@ struct PairIndex {
   std::uint32_t i, j;
 };
 
+// Calendar of pending sign tests: bucket k % kRing holds the pairs due at sample k; every
+// screened pair is first due at sample 1.
+constexpr std::size_t kRing = 4096;
+
+std::vector<std::vector<PairIndex>> initial_calendar(std::size_t n, const ScreenOptions& opt) {
+  std::vector<std::vector<PairIndex>> due(kRing);
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = i + 1; j < n; ++j)
+      if (opt.screens_pair(i, j)) due[1].push_back({i, j});
+  return due;
+}
+
+// The range rate of pair p turned from < 0 at t_prev (states gi, gj) to >= 0 at t: Brent's
+// root is the TCA; an event when its miss is within the pair's distance limit d_ij.
+void solve_tca(const std::vector<SpaceObject>& objects, const ScreenOptions& opt,
+               SampleEphemeris& eph, const PairIndex& p, double t_prev, double t,
+               const StateEci& gi, const StateEci& gj, double fp, double fc, double d_ij,
+               ScreenResult& res) {
+  ++res.stats.root_solves;
+  auto f = [&](double tt) { return range_rate(eph.near(p.i, tt, gi, t_prev), eph.near(p.j, tt, gj, t_prev)); };
+  const double tca = brent_root(f, t_prev, t, fp, fc, opt.tca_tol_s, 200);
+  const StateEci si = eph.near(p.i, tca, gi, t_prev), sj = eph.near(p.j, tca, gj, t_prev);
+  const double miss = (sj.r_eci_m - si.r_eci_m).norm();
+  if (miss <= d_ij) {
+    const double rc = collision_radius_m(objects[p.i], objects[p.j]);
+    res.events.push_back(Conjunction{p.i, p.j, tca, miss, (sj.v_eci_mps - si.v_eci_mps).norm(),
+                                     miss <= rc, miss <= opt.warning_multiple * rc});
+  }
+}
+
 }  // namespace
 
 ScreenResult screen_reference(const std::vector<SpaceObject>& objects, double span_s,
@@ -159,20 +189,15 @@ ScreenResult screen_reference(const std::vector<SpaceObject>& objects, double sp
   const double v_rel = relative_speed_bound_mps(objects, opt, sample_step_s);
   const long nsteps = static_cast<long>(std::ceil(span_s / sample_step_s - 1e-12));
   auto time_of = [&](long k) { return k >= nsteps ? span_s : static_cast<double>(k) * sample_step_s; };
-  // Calendar of pending sign tests: bucket k % ring holds the pairs due at sample k.
-  const std::size_t ring = 4096;
-  std::vector<std::vector<PairIndex>> due(ring);
   check_motion_and_primary(opt, n);
-  for (std::uint32_t i = 0; i < n; ++i)
-    for (std::uint32_t j = i + 1; j < n; ++j)
-      if (opt.screens_pair(i, j)) due[1].push_back({i, j});
+  std::vector<std::vector<PairIndex>> due = initial_calendar(n, opt);
   eph.advance(0, 0.0, span_s);
   std::vector<PairIndex> now;
   for (long k = 1; k <= nsteps; ++k) {
     const double t = time_of(k), t_prev = time_of(k - 1);
     eph.advance(k, t, span_s);
     ++res.stats.steps;
-    now.swap(due[static_cast<std::size_t>(k) % ring]);
+    now.swap(due[static_cast<std::size_t>(k) % kRing]);
     for (const PairIndex& p : now) {
       ++res.stats.pairs_checked;
       const double d_ij = pair_distance_limit_m(objects[p.i], objects[p.j], opt);
@@ -181,24 +206,13 @@ ScreenResult screen_reference(const std::vector<SpaceObject>& objects, double sp
       const StateEci& cj = eph.sample(p.j, k, t);
       const double fp = range_rate(gi, gj);
       const double fc = range_rate(ci, cj);
-      if (fp < 0.0 && fc >= 0.0) {
-        ++res.stats.root_solves;
-        auto f = [&](double tt) { return range_rate(eph.near(p.i, tt, gi, t_prev), eph.near(p.j, tt, gj, t_prev)); };
-        const double tca = brent_root(f, t_prev, t, fp, fc, opt.tca_tol_s, 200);
-        const StateEci si = eph.near(p.i, tca, gi, t_prev), sj = eph.near(p.j, tca, gj, t_prev);
-        const double miss = (sj.r_eci_m - si.r_eci_m).norm();
-        if (miss <= d_ij) {
-          const double rc = collision_radius_m(objects[p.i], objects[p.j]);
-          res.events.push_back(Conjunction{p.i, p.j, tca, miss, (sj.v_eci_mps - si.v_eci_mps).norm(),
-                                           miss <= rc, miss <= opt.warning_multiple * rc});
-        }
-      }
+      if (fp < 0.0 && fc >= 0.0) solve_tca(objects, opt, eph, p, t_prev, t, gi, gj, fp, fc, d_ij, res);
       // Intervals (t_k, t_k+m] with t_k+m < t_k + (d - D) / V cannot hold a miss <= D.
       const double d = (cj.r_eci_m - ci.r_eci_m).norm();
       const double free_steps = (d - d_ij) / (v_rel * sample_step_s);
       long m = free_steps > 0.0 ? static_cast<long>(std::ceil(free_steps)) - 1 : 0;
-      m = std::clamp(m, 0L, static_cast<long>(ring) - 2);
-      if (k + m + 1 <= nsteps) due[static_cast<std::size_t>(k + m + 1) % ring].push_back(p);
+      m = std::clamp(m, 0L, static_cast<long>(kRing) - 2);
+      if (k + m + 1 <= nsteps) due[static_cast<std::size_t>(k + m + 1) % kRing].push_back(p);
     }
     now.clear();
   }

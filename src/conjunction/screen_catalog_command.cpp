@@ -1,0 +1,170 @@
+// `evade screen --tle FILE | --omm FILE` as a library call (screen_command.hpp): the SGP4
+// motion of the catalog (sgp4_screening; Vallado, Crawford, Hujsak & Kelso 2006, AIAA
+// 2006-6753), screened by the robust screener (screen_robust). Times count from the start
+// (default: the latest element epoch); positions are TEME (distances are frame-independent).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <thread>
+
+#include "evade/conjunction/screen_command.hpp"
+#include "evade/conjunction/screening_events.hpp"
+#include "evade/conjunction/sgp4_motion.hpp"
+#include "evade/core/epoch.hpp"
+
+namespace evade::conjunction {
+namespace {
+
+constexpr double kMaxSpanS = 31.0 * 86400.0;  // SGP4 element sets are stale after weeks
+
+std::string utc(double j2000_s) { return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s)); }
+
+// Index of the primary in the screened objects; names the reason when it is not there.
+long primary_index(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
+  if (req.primary_norad < 0) return -1;
+  for (std::size_t k = 0; k < s.norad_ids.size(); ++k)
+    if (s.norad_ids[k] == req.primary_norad) return static_cast<long>(k);
+  for (const auto& r : s.rejected)
+    if (r.norad_id == req.primary_norad)
+      throw std::invalid_argument("--primary " + std::to_string(req.primary_norad) + ": rejected: " + r.reason);
+  throw std::invalid_argument("--primary " + std::to_string(req.primary_norad) + ": no such object in the catalog");
+}
+
+Sgp4Screening catalog_motion(const ScreenCatalogRequest& req) {
+  Sgp4MotionOptions mo;
+  mo.span_s = req.span_s;
+  if (!req.start_utc.empty()) {
+    mo.start_at_latest_epoch = false;
+    mo.start_j2000_s = seconds_since_j2000_from_calendar(parse_calendar_utc(req.start_utc));
+  }
+  Sgp4Screening s = sgp4_screening(req.catalog.objects, mo);
+  if (req.diagnostic)
+    for (const auto& r : s.rejected) req.diagnostic("evade screen: rejected: " + r.message() + "\n");
+  if (s.objects.size() < 2)
+    throw std::invalid_argument("fewer than two usable element sets (" + std::to_string(req.catalog.bad_entries) +
+                                " bad entries, " + std::to_string(s.rejected.size()) + " rejected)");
+  return s;
+}
+
+ScreenOptions catalog_options(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
+  ScreenOptions so;
+  so.motion = s.motion;
+  so.gravity = GravityModel::kTwoBodyJ2;
+  so.earth = wgs72_earth();
+  so.threshold_m = req.threshold_m;
+  so.include_warning_radius = false;  // catalogs carry no sizes: the threshold alone
+  so.step_s = req.step_s;
+  so.threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  so.primary = primary_index(req, s);
+  if (req.progress) {
+    so.progress = [&req](double f) {
+      char buf[64];
+      (void)std::snprintf(buf, sizeof buf, "\rscreen: %5.1f %%", 100.0 * f);
+      req.progress(buf);
+    };
+  }
+  return so;
+}
+
+std::vector<CatalogEvent> catalog_events(const ScreenResult& r, const Sgp4Screening& s) {
+  std::vector<CatalogEvent> out;
+  for (const auto& c : r.events) {
+    out.push_back({s.norad_ids[c.i], s.norad_ids[c.j], s.objects[c.i].name, s.objects[c.j].name,
+                   c.tca_s, utc(s.start_j2000_s + c.tca_s), c.miss_m, c.rel_speed_mps});
+  }
+  return out;
+}
+
+// Everything but the events, the statistics and the CDMs.
+ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const Sgp4Screening& s,
+                                   const ScreenOptions& so) {
+  ScreenCatalogResult res;
+  res.frame = s.motion->frame();
+  res.source = req.source;
+  res.start_j2000_s = s.start_j2000_s;
+  res.start_utc = utc(s.start_j2000_s);
+  res.span_s = req.span_s;
+  res.threshold_m = req.threshold_m;
+  res.objects = static_cast<long>(s.objects.size());
+  res.bad_entries = req.catalog.bad_entries;
+  for (const auto& rj : s.rejected) res.rejections.push_back(rj.message());
+  if (so.primary >= 0) res.primary_norad = req.primary_norad;
+  res.threads = so.threads;
+  res.grid_step_s = so.step_s > 0.0 ? so.step_s : auto_step_s(s.objects.size());
+  return res;
+}
+
+}  // namespace
+
+void ScreenCatalogRequest::validate() const {
+  if (!(span_s > 0.0 && span_s <= kMaxSpanS))
+    throw std::invalid_argument("--span-s = " + std::to_string(span_s) +
+                                " is invalid: expected a number in (0, 2678400] s");
+  if (!(threshold_m > 0.0 && threshold_m <= 1e8))
+    throw std::invalid_argument("--threshold-m = " + std::to_string(threshold_m) +
+                                " is invalid: expected a number in (0, 1e8] m");
+  if (!(step_s == 0.0 || (step_s >= 1.0 && step_s <= 600.0)))
+    throw std::invalid_argument("--step-s = " + std::to_string(step_s) +
+                                " is invalid: expected 0 (automatic) or a number in [1, 600] s");
+  assessment::check_screen_cdm_options(cdm, false);  // catalog objects carry no radii
+}
+
+ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
+  req.validate();
+  const auto t0 = std::chrono::steady_clock::now();
+  const Sgp4Screening s = catalog_motion(req);
+  const auto t1 = std::chrono::steady_clock::now();
+  const ScreenOptions so = catalog_options(req, s);
+  const ScreenResult r = screen_robust(s.objects, req.span_s, so);
+  const auto t2 = std::chrono::steady_clock::now();
+  if (req.progress) req.progress("\n");
+  ScreenCatalogResult res = catalog_header(req, s, so);
+  res.stats = r.stats;
+  res.motion_setup_wall_s = std::chrono::duration<double>(t1 - t0).count();
+  res.screen_wall_s = std::chrono::duration<double>(t2 - t1).count();
+  res.events = catalog_events(r, s);
+  if (!req.cdm.dir.empty()) {
+    const assessment::ScreenCdmRun run{s.start_j2000_s, req.span_s, req.threshold_m, "catalog " + req.source};
+    res.cdm = assessment::screen_event_cdms(req.cdm, run,
+                                            catalog_screening_events(r.events, s, req.catalog.objects, so));
+  }
+  return res;
+}
+
+nlohmann::json to_json(const ScreenCatalogResult& r) {
+  nlohmann::json j;
+  j["command"] = "screen";
+  j["motion"] = "sgp4";
+  j["frame"] = r.frame;
+  j["source"] = r.source;
+  j["start_utc"] = r.start_utc;
+  j["span_s"] = r.span_s;
+  j["threshold_m"] = r.threshold_m;
+  j["objects"] = r.objects;
+  j["bad_entries"] = r.bad_entries;
+  j["rejected"] = static_cast<long>(r.rejections.size());
+  j["rejections"] = r.rejections;
+  if (r.primary_norad) j["primary"] = *r.primary_norad;
+  j["stats"] = {{"grid_steps", r.stats.steps},
+                {"pairs_checked", r.stats.pairs_checked},
+                {"candidates", r.stats.candidates},
+                {"narrow_phase_intervals", r.stats.refined},
+                {"root_solves", r.stats.root_solves},
+                {"unproven_leaves", r.stats.unproven_leaves},
+                {"threads", r.threads},
+                {"grid_step_s", r.grid_step_s}};
+  j["motion_setup_wall_s"] = r.motion_setup_wall_s;
+  j["screen_wall_s"] = r.screen_wall_s;
+  nlohmann::json ev = nlohmann::json::array();
+  for (const auto& e : r.events) {
+    ev.push_back({{"norad_i", e.norad_i}, {"norad_j", e.norad_j}, {"name_i", e.name_i},
+                  {"name_j", e.name_j}, {"tca_s", e.tca_s}, {"tca_utc", e.tca_utc},
+                  {"miss_m", e.miss_m}, {"rel_speed_mps", e.rel_speed_mps}});
+  }
+  j["events"] = std::move(ev);
+  if (r.cdm) j["cdm"] = assessment::to_json(*r.cdm);
+  return j;
+}
+
+}  // namespace evade::conjunction
