@@ -53,4 +53,15 @@ sim::MonteCarloResult run_monte_carlo_distributed(const sim::SimConfig& base, in
 #endif
 }
 
+sim::MonteCarloCampaign run_monte_carlo_campaign(const sim::SimConfig& base, int runs,
+                                                 std::uint64_t seed, int threads,
+                                                 const std::function<void(int, int)>& on_done) {
+  const MpiSession mpi;
+  sim::MonteCarloCampaign c;
+  c.result = run_monte_carlo_distributed(base, runs, seed, threads, mpi, on_done);
+  c.ranks = mpi.size();
+  c.reporting = mpi.rank() == 0;
+  return c;
+}
+
 }  // namespace evade::distributed

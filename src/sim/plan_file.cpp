@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evade/config/json_values.hpp"
+
 namespace evade::sim {
 namespace {
 
@@ -111,8 +113,6 @@ void read_impulses(const json& arr, const std::string& where, PlanFile* f) {
   }
 }
 
-json vec_json(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
-
 const char* source_name(int code) {
   for (const Source& s : kSources)
     if (static_cast<int>(s.code) == code) return s.name;
@@ -156,8 +156,8 @@ std::string plan_file_json(const PlanFile& f) {
   for (int i = 0; i < f.plan.n_impulses && i < BurnPlan::kMaxImpulses; ++i) {
     const ImpulsiveBurn& b = f.plan.impulses[static_cast<std::size_t>(i)];
     j["impulses"].push_back({{"t_s", b.t_s},
-                             {"dv_rsw_mps", vec_json(b.dv_rsw_mps)},
-                             {"dv_eci_mps", b.dv_eci_valid ? vec_json(b.dv_eci_mps) : json()}});
+                             {"dv_rsw_mps", config::vec_json(b.dv_rsw_mps)},
+                             {"dv_eci_mps", b.dv_eci_valid ? config::vec_json(b.dv_eci_mps) : json()}});
   }
   std::string text = j.dump(2) + "\n";
   (void)parse_plan_file(text, "(being written)");  // the reader's rules, field named

@@ -32,7 +32,7 @@ void apply_sim_overrides(const SimOverrides& o, config::Scenario* sc) {
   }
 }
 
-SimConfig read_sim_config(config::Scenario& sc) {
+SimConfig read_sim_config(const config::Scenario& sc) {
   SimConfig cfg = sim_config_from_scenario(sc);
   sc.check_all_used();
   cfg.validate();

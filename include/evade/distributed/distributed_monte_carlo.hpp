@@ -9,6 +9,7 @@
 
 #include "evade/distributed/mpi_session.hpp"
 #include "evade/sim/monte_carlo.hpp"
+#include "evade/sim/sim_command.hpp"
 
 namespace evade::distributed {
 
@@ -18,5 +19,12 @@ sim::MonteCarloResult run_monte_carlo_distributed(const sim::SimConfig& base, in
                                                   std::uint64_t seed, int threads,
                                                   const MpiSession& session,
                                                   const std::function<void(int, int)>& on_done = {});
+
+/// A sim::MonteCarloRunner (`evade sim --runs`, sim_command.hpp): the campaign over the ranks
+/// of an MpiSession opened for it (one process unless started by mpirun); ranks = its size,
+/// reporting on rank 0 only.
+sim::MonteCarloCampaign run_monte_carlo_campaign(const sim::SimConfig& base, int runs,
+                                                 std::uint64_t seed, int threads,
+                                                 const std::function<void(int, int)>& on_done);
 
 }  // namespace evade::distributed

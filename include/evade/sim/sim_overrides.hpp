@@ -32,6 +32,6 @@ void apply_sim_overrides(const SimOverrides& o, config::Scenario* sc);
 /// The SimConfig of sc: sim_config_from_scenario, then check_all_used() (no other keys are
 /// read for a run) and SimConfig::validate(). Throws config::ConfigError or
 /// std::invalid_argument naming the key.
-SimConfig read_sim_config(config::Scenario& sc);
+SimConfig read_sim_config(const config::Scenario& sc);
 
 }  // namespace evade::sim
