@@ -26,12 +26,16 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "param_flag_option.hpp"
 #include "run_program.hpp"
+#include "evade/config/read_params.hpp"
 #include "evade/distributed/distributed_monte_carlo.hpp"
+#include "evade/guidance/guidance_params.hpp"
 #include "evade/lcm_link/sim_lcm_guidance.hpp"
 #include "evade/sim/sim_command.hpp"
 #include "evade/sim/sim_csv.hpp"
 #include "evade/sim/sim_overrides.hpp"
+#include "evade/sim/sim_params.hpp"
 #include "evade/sim/sim_plan_command.hpp"
 
 namespace {
@@ -40,14 +44,8 @@ using namespace evade;
 
 struct SimOptions {
   cli::CommonOptions common;
-  // Numeric flags are kept as text (empty = not given) and parsed here, so that "nan" or
-  // "inf" is reported with the flag's name instead of silently meaning "not given".
-  std::string accel_mps2;
-  std::string detect_s;
-  std::string noise_rad;
-  std::string rate_hz;
-  std::string guidance_hz;
-  std::string rate_noise_radps;
+  /// The parameter flags given, as "key=value" (evade/config/param_flags.hpp).
+  std::vector<std::string> param_overrides;
   bool no_rates = false;
   int runs = 0;
   long long seed = 1;
@@ -71,42 +69,11 @@ std::string num(double v) {
   return os.str();
 }
 
-// A flag given on the command line becomes a scenario override (sim::apply_sim_overrides), so
-// its range is checked with the same rules as the file and it is echoed in "scenario_used".
-// NaN/Inf or text that is not a number: exit 2 naming the flag and the key.
-std::optional<double> number_flag(const char* flag, const char* key, const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  double v = NAN;
-  std::size_t used = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(v)) {
-    throw std::invalid_argument(std::string(flag) + " = '" + text + "' (scenario key " + key +
-                                "): must be a finite number");
-  }
-  return v;
-}
-
-sim::SimOverrides parse_overrides(const SimOptions& o) {
-  sim::SimOverrides ov;
-  ov.max_accel_mps2 = number_flag("--accel", "guidance.max_accel_mps2", o.accel_mps2);
-  ov.detect_before_tca_s = number_flag("--detect", "encounter.detect_before_tca_s", o.detect_s);
-  ov.noise_rad = number_flag("--noise-rad", "sensor.noise_rad", o.noise_rad);
-  ov.sensor_rate_hz = number_flag("--rate-hz", "sensor.rate_hz", o.rate_hz);
-  ov.guidance_rate_hz = number_flag("--guidance-hz", "guidance.rate_hz", o.guidance_hz);
-  ov.rate_noise_radps =
-      number_flag("--rate-noise-radps", "sensor.rate_noise_radps", o.rate_noise_radps);
-  ov.no_rates = o.no_rates;
-  return ov;
-}
-
-// The scenario with the parameter flags written into it as overrides (parse_overrides).
+// The scenario with the parameter flags written into it as overrides (then the sensor rule:
+// sim_overrides.hpp).
 config::Scenario scenario_with_flags(const SimOptions& o) {
   config::Scenario sc = cli::load_scenario(o.common);
-  sim::apply_sim_overrides(parse_overrides(o), &sc);
+  sim::apply_sim_overrides({o.param_overrides, o.no_rates}, &sc);
   return sc;
 }
 
@@ -248,18 +215,26 @@ int run_sim(const SimOptions& o) {
   return 0;
 }
 
-// The parameter flags: each given one becomes a scenario override (parse_overrides).
+// The parameter flags (evade/config/param_flags.hpp), each declared by its key's table; a
+// given value becomes a scenario override. sim's old --rate-hz (the sensor rate) is refused.
 void add_parameter_flags(CLI::App& app, SimOptions& o) {
-  app.add_option("--accel", o.accel_mps2, "maximum acceleration [m/s^2] (guidance.max_accel_mps2)");
-  app.add_option("--detect", o.detect_s,
-                 "detection time before the nominal closest approach [s]");
-  app.add_option("--noise-rad", o.noise_rad,
-                 "angles-only sensor with this angle noise 1-sigma [rad] (keeps measured "
-                 "rates only if --rate-noise-radps is also given)");
-  app.add_option("--rate-hz", o.rate_hz, "sensor sample rate [Hz]");
-  app.add_option("--guidance-hz", o.guidance_hz, "guidance cycle rate [Hz] (guidance.rate_hz)");
-  app.add_option("--rate-noise-radps", o.rate_noise_radps,
-                 "sensor angle-rate noise 1-sigma [rad/s]");
+  std::size_t n_retired = 0;
+  const config::RetiredFlag* retired = config::sim_retired_flags(&n_retired);
+  cli::add_retired_flags(app, retired, n_retired);
+  const auto add = [&](const auto& table, const char* prefix, const char* key) {
+    const ParamSpec* spec = config::find_param_spec(table, prefix, key);
+    if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
+    return cli::add_param_flag(app, key, *spec, &o.param_overrides);
+  };
+  add(guidance::guidance_params(), "guidance.", "guidance.max_accel_mps2");
+  add(sim::sim_params(), "", "encounter.detect_before_tca_s");
+  CLI::Option* noise = add(sim::sim_params(), "", "sensor.noise_rad");
+  noise->description(noise->get_description() +
+                     " (given alone it selects the angles-only sensor; with --rate-noise-radps "
+                     "the measured rates are kept)");
+  add(sim::sim_params(), "", "sensor.rate_hz");
+  add(guidance::guidance_params(), "guidance.", "guidance.rate_hz");
+  add(sim::sim_params(), "", "sensor.rate_noise_radps");
   app.add_flag("--no-rates", o.no_rates, "angles only (the filter estimates the rates)");
 }
 

@@ -1,8 +1,6 @@
 // Run-time overrides of a simulation scenario (sim_overrides.hpp; paper 000 sec. 4–5).
 #include "evade/sim/sim_overrides.hpp"
 
-#include <iomanip>
-#include <sstream>
 #include <string>
 
 #include "evade/sim/sim_scenario.hpp"
@@ -10,24 +8,18 @@
 namespace evade::sim {
 namespace {
 
-// key=value with the value written so that it reads back as the same double.
-void override_key(config::Scenario* sc, const char* key, const std::optional<double>& v) {
-  if (!v) return;
-  std::ostringstream os;
-  os << std::setprecision(17) << *v;
-  sc->apply_override(std::string(key) + "=" + os.str());
+bool given(const SimOverrides& o, const std::string& key) {
+  for (const std::string& kv : o.params) {
+    if (kv.compare(0, key.size() + 1, key + "=") == 0) return true;
+  }
+  return false;
 }
 
 }  // namespace
 
 void apply_sim_overrides(const SimOverrides& o, config::Scenario* sc) {
-  override_key(sc, "guidance.max_accel_mps2", o.max_accel_mps2);
-  override_key(sc, "encounter.detect_before_tca_s", o.detect_before_tca_s);
-  override_key(sc, "sensor.noise_rad", o.noise_rad);
-  override_key(sc, "sensor.rate_hz", o.sensor_rate_hz);
-  override_key(sc, "guidance.rate_hz", o.guidance_rate_hz);
-  override_key(sc, "sensor.rate_noise_radps", o.rate_noise_radps);
-  if (o.no_rates || (o.noise_rad && !o.rate_noise_radps)) {
+  for (const std::string& kv : o.params) sc->apply_override(kv);
+  if (o.no_rates || (given(o, "sensor.noise_rad") && !given(o, "sensor.rate_noise_radps"))) {
     sc->apply_override("sensor.has_rates=false");
   }
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "evade/config/param_flags.hpp"
 #include "evade/config/scenario.hpp"
 #include "evade/sim/sim_overrides.hpp"
 
@@ -29,10 +30,11 @@ TEST(SimOverrides, NothingGivenKeepsTheScenario) {
 TEST(SimOverrides, EachValueReplacesItsKeyExactly) {
   config::Scenario sc = config::Scenario::load("seed0");
   sim::SimOverrides o;
-  o.max_accel_mps2 = 0.1 + 0.2;  // not a short decimal: must survive the text round trip
-  o.detect_before_tca_s = 12.5;
-  o.sensor_rate_hz = 25.0;
-  o.guidance_rate_hz = 20.0;
+  // Not a short decimal: must survive the text round trip.
+  o.params.push_back(config::param_override_text("guidance.max_accel_mps2", 0.1 + 0.2));
+  o.params.push_back("encounter.detect_before_tca_s=12.5");
+  o.params.push_back("sensor.rate_hz=25");
+  o.params.push_back("guidance.rate_hz=20");
   sim::apply_sim_overrides(o, &sc);
   const sim::SimConfig c = sim::read_sim_config(sc);
   EXPECT_EQ(c.guidance.max_accel_mps2, 0.1 + 0.2);
@@ -46,7 +48,7 @@ TEST(SimOverrides, EachValueReplacesItsKeyExactly) {
 TEST(SimOverrides, AngleNoiseAloneSelectsTheAnglesOnlySensor) {
   config::Scenario sc = config::Scenario::load("seed0");
   sim::SimOverrides o;
-  o.noise_rad = 50e-6;
+  o.params.push_back("sensor.noise_rad=5e-05");
   sim::apply_sim_overrides(o, &sc);
   const sim::SimConfig c = sim::read_sim_config(sc);
   EXPECT_EQ(c.sensor.noise_rad, 50e-6);
@@ -56,8 +58,8 @@ TEST(SimOverrides, AngleNoiseAloneSelectsTheAnglesOnlySensor) {
 TEST(SimOverrides, AngleAndRateNoiseKeepTheMeasuredRates) {
   config::Scenario sc = config::Scenario::load("seed0");
   sim::SimOverrides o;
-  o.noise_rad = 50e-6;
-  o.rate_noise_radps = 1e-6;
+  o.params.push_back("sensor.noise_rad=5e-05");
+  o.params.push_back("sensor.rate_noise_radps=1e-06");
   sim::apply_sim_overrides(o, &sc);
   const sim::SimConfig c = sim::read_sim_config(sc);
   EXPECT_TRUE(c.sensor.has_rates);
@@ -77,7 +79,7 @@ TEST(SimOverrides, NoRatesSelectsAnglesOnlyWithoutNoise) {
 TEST(SimOverrides, OutOfRangeValueIsNamedByItsKey) {
   config::Scenario sc = config::Scenario::load("seed0");
   sim::SimOverrides o;
-  o.max_accel_mps2 = -1.0;
+  o.params.push_back("guidance.max_accel_mps2=-1");
   sim::apply_sim_overrides(o, &sc);
   try {
     (void)sim::read_sim_config(sc);

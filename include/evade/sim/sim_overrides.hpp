@@ -7,26 +7,23 @@
 // its noisy rate-stabilised rates. no_rates always selects angles only.
 #pragma once
 
-#include <optional>
+#include <string>
+#include <vector>
 
 #include "evade/config/scenario.hpp"
 #include "evade/sim/sim_config.hpp"
 
 namespace evade::sim {
 
-/// Values given for one run (empty: keep the scenario's). Finite numbers (the caller parses
-/// and rejects NaN/Inf naming its own flag); ranges are checked when the scenario is read.
+/// What the command line gave for one run: the parameter flags' overrides ("key=value",
+/// already checked against their keys' declarations: evade/config/param_flags.hpp) and
+/// --no-rates. Ranges are checked again when the scenario is read.
 struct SimOverrides {
-  std::optional<double> max_accel_mps2;       ///< guidance.max_accel_mps2
-  std::optional<double> detect_before_tca_s;  ///< encounter.detect_before_tca_s
-  std::optional<double> noise_rad;            ///< sensor.noise_rad
-  std::optional<double> sensor_rate_hz;       ///< sensor.rate_hz
-  std::optional<double> guidance_rate_hz;     ///< guidance.rate_hz
-  std::optional<double> rate_noise_radps;     ///< sensor.rate_noise_radps
-  bool no_rates = false;                      ///< angles only (sensor.has_rates = false)
+  std::vector<std::string> params;  ///< "sensor.noise_rad=5e-05", ... in command-line order
+  bool no_rates = false;            ///< angles only (sensor.has_rates = false)
 };
 
-/// Writes the overrides into sc (in the order of the fields above, then sensor.has_rates).
+/// Writes the overrides into sc (in order), then the sensor rule's sensor.has_rates.
 void apply_sim_overrides(const SimOverrides& o, config::Scenario* sc);
 
 /// The SimConfig of sc: sim_config_from_scenario, then check_all_used() (no other keys are
