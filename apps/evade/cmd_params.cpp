@@ -13,6 +13,7 @@
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/screen_scenario.hpp"
 #include "evade/core/earth_params.hpp"
+#include "evade/dynamics/propagate_command.hpp"
 #include "evade/formation/decision.hpp"
 #include "evade/formation/formation_scenario.hpp"
 #include "evade/guidance/guidance_params.hpp"
@@ -37,6 +38,8 @@ std::string parameters_markdown() {
       "Keys are scenario keys (`--set key=value`); a bad value exits 2 naming the key, the value "
       "and the allowed range, with the same text in every command and in the guidance node.\n";
   md += section("Earth model", "every command that reads `earth.*`", "earth.", earth_params());
+  md += section("Propagation demo", "`evade propagate`", "propagation.",
+                dynamics::propagate_params());
   md += section("Guidance law (paper 000)",
                 "`evade sim`, `evade_guidance_node` (`--scenario`, `--config`, flags)",
                 "guidance.", guidance::guidance_params());

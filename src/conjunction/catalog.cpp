@@ -1,4 +1,5 @@
 // Screening objects from YAML scenarios or CSV text, validated field by field (issue 6).
+// Keplerian elements, from either, have the one reader's limits (config/read_elements.hpp).
 #include "evade/conjunction/catalog.hpp"
 
 #include <cmath>
@@ -6,7 +7,9 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
+#include "evade/config/read_elements.hpp"
 #include "evade/core/elements.hpp"
 
 namespace evade::conjunction {
@@ -42,11 +45,107 @@ std::vector<std::string> split_csv(const std::string& line) {
   return out;
 }
 
-std::invalid_argument not_a_number(long line_no, std::size_t k, const std::string& name,
-                                   const std::string& cell) {
-  return std::invalid_argument("CSV line " + std::to_string(line_no) + " (object " +
-                               std::to_string(k) + "): " + name + " = '" + cell +
-                               "' is not a finite number");
+// A CSV header: each column's index, and the form of the rows (Keplerian or Cartesian).
+struct CsvColumns {
+  std::vector<std::string> header;
+  std::map<std::string, std::size_t> col;
+  bool cartesian = false;
+};
+
+CsvColumns read_header(const std::vector<std::string>& cells, long line_no) {
+  CsvColumns c;
+  c.header = cells;
+  for (std::size_t i = 0; i < cells.size(); ++i) c.col[cells[i]] = i;
+  const std::vector<std::string> kep = {"a_m", "e", "i_deg", "raan_deg", "argp_deg",
+                                        "mean_anomaly_deg", "size_m", "pos_error_m"};
+  const std::vector<std::string> car = {"x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps",
+                                        "size_m", "pos_error_m"};
+  c.cartesian = c.col.count("x_m") > 0;
+  for (const auto& need : c.cartesian ? car : kep) {
+    if (!c.col.count(need)) {
+      throw std::invalid_argument("CSV header (line " + std::to_string(line_no) +
+                                  "): missing column " + need);
+    }
+  }
+  return c;
+}
+
+// One data row (object k on line line_no): its values by column name, and the error texts,
+// which name the line, the object and the column.
+class CsvRow {
+ public:
+  CsvRow(const CsvColumns& cols, std::vector<std::string> cells, long line_no, std::size_t k)
+      : cols_(cols), cells_(std::move(cells)), line_no_(line_no), k_(k) {
+    if (cells_.size() != cols_.header.size()) {
+      throw std::invalid_argument(where() + std::to_string(cells_.size()) +
+                                  " columns, header has " + std::to_string(cols_.header.size()));
+    }
+  }
+
+  bool cartesian() const { return cols_.cartesian; }
+
+  /// The cell of a column as a finite number.
+  double num(const std::string& name) const {
+    const std::string& s = cells_[cols_.col.at(name)];
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v)) {
+      throw std::invalid_argument(where() + name + " = '" + s + "' is not a finite number");
+    }
+    return v;
+  }
+
+  /// The cell of an orbital element, inside its one limit (config/read_elements.hpp).
+  double element(const std::string& name, const config::ElementLimit& limit) const {
+    const double v = num(name);
+    if (!config::element_value_ok(limit, v)) bad(name, v, config::element_interval_text(limit));
+    return v;
+  }
+
+  std::string name() const {
+    return cols_.col.count("name") ? cells_[cols_.col.at("name")] : "object" + std::to_string(k_);
+  }
+
+  [[noreturn]] void bad(const std::string& name, double v, const std::string& allowed) const {
+    std::ostringstream os;
+    os << where() << name << " = " << v << " outside " << allowed;
+    throw std::invalid_argument(os.str());
+  }
+
+ private:
+  std::string where() const {
+    return "CSV line " + std::to_string(line_no_) + " (object " + std::to_string(k_) + "): ";
+  }
+
+  const CsvColumns& cols_;
+  std::vector<std::string> cells_;
+  long line_no_;
+  std::size_t k_;
+};
+
+SpaceObject object_from_row(const CsvRow& row, const EarthModel& earth) {
+  SpaceObject o;
+  if (row.cartesian()) {
+    o.state.r_eci_m = Vec3(row.num("x_m"), row.num("y_m"), row.num("z_m"));
+    o.state.v_eci_mps = Vec3(row.num("vx_mps"), row.num("vy_mps"), row.num("vz_mps"));
+  } else {
+    const double a = row.element("a_m", config::kSemiMajorAxisLimit);
+    const double e = row.element("e", config::kEccentricityLimit);
+    if (!config::perigee_above_surface(a, e, earth)) {
+      row.bad("a_m", a, "a(1-e) > re_m (perigee inside the Earth)");
+    }
+    const double inc = row.element("i_deg", config::kInclinationLimit);
+    const double raan = row.element("raan_deg", config::kAngleLimit);
+    const double argp = row.element("argp_deg", config::kAngleLimit);
+    const double m = row.element("mean_anomaly_deg", config::kAngleLimit);
+    o = from_elements(a, e, inc, raan, argp, m, earth);
+  }
+  o.name = row.name();
+  o.size_m = row.num("size_m");
+  o.pos_error_m = row.num("pos_error_m");
+  if (!(o.size_m >= 0.0)) row.bad("size_m", o.size_m, "[0, inf)");
+  if (!(o.pos_error_m >= 0.0)) row.bad("pos_error_m", o.pos_error_m, "[0, inf)");
+  return o;
 }
 
 }  // namespace
@@ -75,23 +174,9 @@ std::vector<SpaceObject> objects_from_scenario(const config::Scenario& sc, const
                                   std::to_string(earth.re_m) + " m)");
       }
     } else {
-      const double a = sc.get_double(p + "a_m", 1.0, 1e10);
-      const double e = sc.get_double(p + "e", 0.0, 1.0);
-      if (!(e < 1.0)) {
-        throw config::ConfigError(p + "e = " + std::to_string(e) + " outside [0, 1) (bound orbit)");
-      }
-      if (!(a * (1.0 - e) > earth.re_m)) {
-        throw config::ConfigError(p + "a_m = " + std::to_string(a) + " with e = " +
-                                  std::to_string(e) + ": perigee radius a(1-e) = " +
-                                  std::to_string(a * (1.0 - e)) +
-                                  " m inside the Earth (allowed > re_m = " +
-                                  std::to_string(earth.re_m) + " m)");
-      }
-      const double inc = sc.get_double(p + "i_deg", 0.0, 180.0);
-      const double raan = sc.get_double(p + "raan_deg", -360.0, 360.0);
-      const double argp = sc.get_double(p + "argp_deg", -360.0, 360.0);
-      const double m = sc.get_double(p + "mean_anomaly_deg", -360.0, 360.0);
-      o = from_elements(a, e, inc, raan, argp, m, earth);
+      const OrbitalElements oe =
+          config::read_elements(sc, p, earth, config::OrbitPhase::kMeanAnomaly);
+      o.state = state_from_elements(oe, earth.mu_m3ps2);
     }
     o.name = sc.get_string(p + "name", "object" + std::to_string(k));
     o.size_m = sc.get_double(p + "size_m", 0.0, 1e5);
@@ -105,73 +190,19 @@ std::vector<SpaceObject> objects_from_scenario(const config::Scenario& sc, const
 std::vector<SpaceObject> objects_from_csv(const std::string& text, const EarthModel& earth) {
   std::istringstream is(text);
   std::string line;
-  std::vector<std::string> header;
-  std::map<std::string, std::size_t> col;
+  CsvColumns cols;
   std::vector<SpaceObject> out;
   long line_no = 0;
-  bool cartesian = false;
   while (std::getline(is, line)) {
     ++line_no;
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
     const auto cells = split_csv(t);
-    if (header.empty()) {
-      header = cells;
-      for (std::size_t c = 0; c < header.size(); ++c) col[header[c]] = c;
-      const std::vector<std::string> kep = {"a_m", "e", "i_deg", "raan_deg", "argp_deg",
-                                            "mean_anomaly_deg", "size_m", "pos_error_m"};
-      const std::vector<std::string> car = {"x_m", "y_m", "z_m", "vx_mps", "vy_mps", "vz_mps",
-                                            "size_m", "pos_error_m"};
-      cartesian = col.count("x_m") > 0;
-      for (const auto& need : cartesian ? car : kep) {
-        if (!col.count(need)) {
-          throw std::invalid_argument("CSV header (line " + std::to_string(line_no) +
-                                      "): missing column " + need);
-        }
-      }
-      continue;
-    }
-    const std::size_t k = out.size();
-    if (cells.size() != header.size()) {
-      throw std::invalid_argument("CSV line " + std::to_string(line_no) + " (object " +
-                                  std::to_string(k) + "): " + std::to_string(cells.size()) +
-                                  " columns, header has " + std::to_string(header.size()));
-    }
-    auto num = [&](const std::string& name) {
-      const std::string& s = cells[col.at(name)];
-      char* end = nullptr;
-      const double v = std::strtod(s.c_str(), &end);
-      if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v)) {
-        throw not_a_number(line_no, k, name, s);
-      }
-      return v;
-    };
-    auto bad = [&](const std::string& name, double v, const std::string& allowed) {
-      std::ostringstream os;
-      os << "CSV line " << line_no << " (object " << k << "): " << name << " = " << v
-         << " outside " << allowed;
-      throw std::invalid_argument(os.str());
-    };
-    SpaceObject o;
-    if (cartesian) {
-      o.state.r_eci_m = Vec3(num("x_m"), num("y_m"), num("z_m"));
-      o.state.v_eci_mps = Vec3(num("vx_mps"), num("vy_mps"), num("vz_mps"));
+    if (cols.header.empty()) {
+      cols = read_header(cells, line_no);
     } else {
-      const double a = num("a_m");
-      const double e = num("e");
-      if (!(a > 0.0)) bad("a_m", a, "(0, inf)");
-      if (!(e >= 0.0 && e < 1.0)) bad("e", e, "[0, 1)");
-      if (!(a * (1.0 - e) > earth.re_m)) bad("a_m", a, "a(1-e) > re_m (perigee inside the Earth)");
-      const double inc = num("i_deg");
-      if (!(inc >= 0.0 && inc <= 180.0)) bad("i_deg", inc, "[0, 180]");
-      o = from_elements(a, e, inc, num("raan_deg"), num("argp_deg"), num("mean_anomaly_deg"), earth);
+      out.push_back(object_from_row(CsvRow(cols, cells, line_no, out.size()), earth));
     }
-    o.name = col.count("name") ? cells[col.at("name")] : "object" + std::to_string(k);
-    o.size_m = num("size_m");
-    o.pos_error_m = num("pos_error_m");
-    if (!(o.size_m >= 0.0)) bad("size_m", o.size_m, "[0, inf)");
-    if (!(o.pos_error_m >= 0.0)) bad("pos_error_m", o.pos_error_m, "[0, inf)");
-    out.push_back(o);
   }
   validate_objects(out, earth);
   return out;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "evade/config/read_elements.hpp"
 #include "evade/config/read_params.hpp"
 
 namespace evade::formation {
@@ -82,12 +83,17 @@ std::vector<std::string> read_groups(const config::Scenario& sc, FormationSpec& 
         sc.get_double(p + "nominal_phase_offset_deg", -360.0, 360.0) * kDegToRad;
     for (int r = 0; r < 3; ++r) {
       const std::string q = p + roles[r] + ".";
+      // The one element reader and its limits; the near-circular model's tighter limits
+      // (e <= 0.01, a from re_m + 100 km, i away from 0 and 180 deg) are
+      // FormationSpec::validate()'s, reported with their reason by read_plan_inputs.
+      const OrbitalElements oe =
+          config::read_elements(sc, q, f.earth, config::OrbitPhase::kArgumentOfLatitude);
       MeanElements& m = gr.sats[static_cast<std::size_t>(r)];
-      m.a_m = sc.get_double(q + "a_m", f.earth.re_m + 1e5, 5e7);
-      m.e = sc.get_double(q + "e", 0.0, 0.01, 0.0);
-      m.i_rad = sc.get_double(q + "i_deg", 0.1, 179.9) * kDegToRad;
-      m.raan_rad = sc.get_double(q + "raan_deg", -360.0, 360.0) * kDegToRad;
-      m.arg_lat_rad = sc.get_double(q + "arg_lat_deg", -360.0, 360.0) * kDegToRad;
+      m.a_m = oe.a_m;
+      m.e = oe.e;
+      m.i_rad = oe.i_rad;
+      m.raan_rad = oe.raan_rad;
+      m.arg_lat_rad = oe.true_anomaly_rad;  // this form reads u as the true anomaly, argp = 0
     }
     f.groups.push_back(gr);
   }

@@ -43,6 +43,14 @@ TEST(RejectsBadObjects, YamlHyperbolicNamesE) {
   EXPECT_NE(msg.find("objects.1.e"), std::string::npos) << msg;
 }
 
+TEST(RejectsBadObjects, YamlElementsHaveTheOneReadersLimits) {
+  const std::string msg = error_of_yaml(
+      "{a_m: 7000000, e: 1.5, i_deg: 50, raan_deg: 0, argp_deg: 0, mean_anomaly_deg: 0, "
+      "size_m: 1, pos_error_m: 1}");
+  EXPECT_NE(msg.find("key 'objects.1.e' = '1.5' is invalid: expected a number in [0, 1)"),
+            std::string::npos) << msg;
+}
+
 TEST(RejectsBadObjects, YamlPerigeeInsideEarth) {
   const std::string msg = error_of_yaml(
       "{a_m: 7000000, e: 0.1, i_deg: 50, raan_deg: 0, argp_deg: 0, mean_anomaly_deg: 0, "
@@ -78,6 +86,8 @@ TEST(RejectsBadObjects, CsvFieldsNamed) {
   EXPECT_NE(m.find(": e ="), std::string::npos) << m;
   m = error_of_csv(head + good + "b,6000000,0,50,0,0,0,1,1\n");
   EXPECT_NE(m.find("inside the Earth"), std::string::npos) << m;
+  m = error_of_csv(head + good + "b,7000000,0,50,0,400,0,1,1\n");  // the one angle limit
+  EXPECT_NE(m.find("argp_deg = 400 outside [-360, 360] deg"), std::string::npos) << m;
   m = error_of_csv(head + good + "b,7000000,nan,50,0,0,0,1,1\n");
   EXPECT_NE(m.find("object 1"), std::string::npos) << m;
   EXPECT_NE(m.find(" e "), std::string::npos) << m;

@@ -63,6 +63,27 @@ TEST(FormationScenario, RejectsBadInput) {
   expect_config_error("propagation.samples_per_rev=4", "propagation.samples_per_rev");
 }
 
+// The elements go through the one element reader (its limits: e in [0, 1)); the
+// near-circular model's tighter limit is the formation's own, with its reason.
+TEST(FormationScenario, ElementsHaveTheOneReadersLimitsAndTheModelsOwn) {
+  const auto error_of = [](const std::string& assignment) -> std::string {
+    try {
+      (void)read_plan_inputs(seed3_with(assignment));
+    } catch (const config::ConfigError& e) {
+      return e.what();
+    }
+    return "<no error>";
+  };
+  std::string m = error_of("formation.groups.1.deputy1.e=1.5");
+  EXPECT_NE(m.find("key 'formation.groups.1.deputy1.e' = '1.5' is invalid: expected a number in [0, 1)"),
+            std::string::npos) << m;
+  m = error_of("formation.groups.1.deputy1.e=0.05");
+  EXPECT_NE(m.find("deputy1.e"), std::string::npos) << m;
+  EXPECT_NE(m.find("near-circular"), std::string::npos) << m;
+  m = error_of("formation.groups.0.chief.raan_deg=400");
+  EXPECT_NE(m.find("expected a number in [-360, 360] deg"), std::string::npos) << m;
+}
+
 // seed3.yaml's text without the line holding `key:` (the key then is missing).
 std::string seed3_text_without(const std::string& key) {
   for (const std::string& dir : config::scenario_search_dirs()) {

@@ -1,0 +1,140 @@
+// `evade propagate --tle/--omm` as a library call (see propagate_catalog_command.hpp): SGP4
+// (Vallado, Crawford, Hujsak and Kelso, "Revisiting Spacetrack Report #3", 2006) for every
+// object over the same instants, TEME or J2000.
+#include "evade/sgp4/propagate_catalog_command.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "evade/config/json_values.hpp"
+#include "evade/core/epoch.hpp"
+#include "evade/sgp4/teme_to_j2000.hpp"
+
+namespace evade::sgp4 {
+namespace {
+
+constexpr double kMaxSpanS = 366.0 * 86400.0;  // one year of SGP4 is already far past its use
+constexpr double kMaxStepsPerObject = 100000.0;
+
+std::string utc_text(double j2000_s) {
+  return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s));
+}
+
+CatalogTrack propagate_object(const MeanElements& m, double start_j2000_s,
+                              const PropagateCatalogRequest& req, bool j2000) {
+  CatalogTrack track;
+  track.id = m.norad_id;
+  track.name = m.name;
+  track.epoch_j2000_s = epoch_seconds_since_j2000(m);
+  const Sgp4Propagator prop(m, OperationMode::kImproved);
+  const double offset_s = start_j2000_s - track.epoch_j2000_s;
+  const long n = static_cast<long>(req.span_s / req.step_s + 1e-9);
+  for (long k = 0; k <= n; ++k) {
+    const double t_s = std::min(static_cast<double>(k) * req.step_s, req.span_s);
+    const Sgp4State s = prop.propagate_s(offset_s + t_s);
+    if (s.error != Sgp4Error::kNone) {
+      track.error = s.error;
+      track.error_t_s = t_s;
+      break;
+    }
+    CatalogState out{t_s, s.r_teme_m, s.v_teme_mps};
+    if (j2000) teme_to_j2000(start_j2000_s + t_s, s.r_teme_m, s.v_teme_mps, out.r_m, out.v_mps);
+    track.states.push_back(out);
+  }
+  return track;
+}
+
+nlohmann::json track_json(const CatalogTrack& t) {
+  nlohmann::json obj;
+  obj["id"] = t.id;
+  obj["name"] = t.name;
+  obj["epoch_utc"] = utc_text(t.epoch_j2000_s);
+  nlohmann::json states = nlohmann::json::array();
+  for (const CatalogState& s : t.states) {
+    states.push_back({{"t_s", s.t_s}, {"r_m", config::vec_json(s.r_m)},
+                      {"v_mps", config::vec_json(s.v_mps)}});
+  }
+  if (t.error != Sgp4Error::kNone) {
+    obj["sgp4_error"] = {{"t_s", t.error_t_s},
+                         {"code", static_cast<int>(t.error)},
+                         {"text", sgp4_error_text(t.error)}};
+  }
+  obj["states"] = std::move(states);
+  return obj;
+}
+
+}  // namespace
+
+void check_propagate_catalog_request(const PropagateCatalogRequest& req) {
+  if (!(req.span_s >= 0.0 && req.span_s <= kMaxSpanS))
+    throw std::invalid_argument("--span-s = " + std::to_string(req.span_s) +
+                                " is invalid: expected a number in [0, 31622400] s");
+  if (!(req.step_s > 0.0) || req.span_s / req.step_s > kMaxStepsPerObject)
+    throw std::invalid_argument("--step-s = " + std::to_string(req.step_s) +
+                                " is invalid: expected a number > 0 with span/step <= 100000");
+  if (req.frame != "teme" && req.frame != "eci")
+    throw std::invalid_argument("--frame = '" + req.frame + "' is invalid: expected teme or eci");
+}
+
+PropagateCatalogResult run_propagate_catalog(const PropagateCatalogRequest& req) {
+  check_propagate_catalog_request(req);
+  const Catalog& cat = req.catalog;
+  if (cat.objects.empty())
+    throw std::invalid_argument("no valid element set in the file (" +
+                                std::to_string(cat.bad_entries) + " bad entries)");
+  PropagateCatalogResult r;
+  r.start_j2000_s = epoch_seconds_since_j2000(cat.objects[0]);
+  for (const auto& m : cat.objects) {
+    r.start_j2000_s = std::max(r.start_j2000_s, epoch_seconds_since_j2000(m));
+  }
+  r.j2000 = req.frame == "eci";
+  r.bad_entries = cat.bad_entries;
+  for (const auto& is : cat.issues) r.issues.push_back(is.message());
+  r.objects.reserve(cat.objects.size());
+  for (const auto& m : cat.objects) {
+    r.objects.push_back(propagate_object(m, r.start_j2000_s, req, r.j2000));
+  }
+  return r;
+}
+
+nlohmann::json to_json(const PropagateCatalogResult& r) {
+  nlohmann::json j;
+  j["start_utc"] = utc_text(r.start_j2000_s);
+  j["frame"] = r.j2000 ? "J2000" : "TEME";
+  j["bad_entries"] = r.bad_entries;
+  j["issues"] = nlohmann::json::array();
+  for (const auto& is : r.issues) j["issues"].push_back(is);
+  j["objects"] = nlohmann::json::array();
+  for (const auto& t : r.objects) j["objects"].push_back(track_json(t));
+  return j;
+}
+
+std::string to_text(const PropagateCatalogResult& r) {
+  char buf[512];
+  // Fixed formats of finite numbers and bounded names (%.*s): the counts are not needed.
+  (void)std::snprintf(buf, sizeof buf,
+                      "evade propagate: %zu objects (%d bad entries), frame %s, from %s UTC\n",
+                      r.objects.size(), r.bad_entries, r.j2000 ? "J2000" : "TEME",
+                      utc_text(r.start_j2000_s).c_str());
+  std::string text = buf;
+  for (const CatalogTrack& t : r.objects) {
+    (void)std::snprintf(buf, sizeof buf, "  %6ld %-24.200s %zu states", t.id, t.name.c_str(),
+                        t.states.size());
+    text += buf;
+    if (!t.states.empty()) {
+      const CatalogState& last = t.states.back();
+      (void)std::snprintf(buf, sizeof buf, ", at t = %.0f s r_m = [%.1f, %.1f, %.1f]", last.t_s,
+                          last.r_m.x(), last.r_m.y(), last.r_m.z());
+      text += buf;
+    }
+    if (t.error != Sgp4Error::kNone) {
+      text += std::string(" (stopped: ") + sgp4_error_text(t.error) + ")";
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+}  // namespace evade::sgp4
