@@ -3,6 +3,7 @@
 #include "evade/observability/problem.hpp"
 
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -20,33 +21,67 @@ namespace {
   throw std::invalid_argument(os.str());
 }
 
+// One check of validate(): when !ok, bad(field, value, allowed).
+struct Check {
+  bool ok;
+  const char* field;
+  double value;
+  std::string allowed;
+};
+
+// Throws for the first failed check, in order.
+void require_all(std::initializer_list<Check> checks) {
+  for (const Check& c : checks) {
+    if (!c.ok) bad(c.field, c.value, c.allowed);
+  }
+}
+
+// v finite and in (lo, hi].
+bool finite_in_open_closed(double v, double lo, double hi) {
+  return std::isfinite(v) && v > lo && v <= hi;
+}
+
+void validate_state(const Vec6& x) {
+  for (int i = 0; i < 6; ++i)
+    if (!std::isfinite(x(i)))
+      bad("x_chaser_p0[" + std::to_string(i) + "]", x(i), "finite [m, m/s]");
+  if (x.head<3>().norm() <= 0.0)
+    bad("|x_chaser_p0 position|", 0.0, "> 0 m (the angles are undefined at zero range)");
+}
+
+void validate_bounds(const ObservabilityProblem& p) {
+  const double lo = p.theta_min_rad;
+  const double hi = p.theta_max_rad;
+  const double eps = p.eps_max_rad;
+  require_all({
+      {std::isfinite(lo) && std::isfinite(hi), "theta bounds", std::isfinite(lo) ? hi : lo,
+       "finite"},
+      {lo < hi, "theta_min_rad", lo,
+       "< theta_max_rad = " + std::to_string(hi) + " (inverted or empty bounds)"},
+      {!(hi - lo > kTwoPi + 1e-12), "theta_max_rad - theta_min_rad", hi - lo, "<= 2π"},
+      {std::isfinite(eps) && eps >= 0.0 && eps <= 0.5 * kPi, "eps_max_rad", eps,
+       "finite, in [0, π/2]"},
+  });
+}
+
 }  // namespace
 
 Mat3 rotation_rsw_to_paper() { return Vec3(-1.0, -1.0, 1.0).asDiagonal(); }
 
 void validate(const ObservabilityProblem& p) {
-  if (!std::isfinite(p.n_radps) || p.n_radps <= 0.0 || p.n_radps > 1e-2)
-    bad("n_radps", p.n_radps, "finite, in (0, 0.01] rad/s");
-  for (int i = 0; i < 6; ++i)
-    if (!std::isfinite(p.x_chaser_p0(i)))
-      bad("x_chaser_p0[" + std::to_string(i) + "]", p.x_chaser_p0(i), "finite [m, m/s]");
-  if (p.x_chaser_p0.head<3>().norm() <= 0.0)
-    bad("|x_chaser_p0 position|", 0.0, "> 0 m (the angles are undefined at zero range)");
-  if (!std::isfinite(p.dv_mps) || p.dv_mps <= 0.0 || p.dv_mps > 1e4)
-    bad("dv_mps", p.dv_mps, "finite, in (0, 1e4] m/s (a zero burn has no direction)");
-  if (!std::isfinite(p.dt_obs_s) || p.dt_obs_s <= 0.0) bad("dt_obs_s", p.dt_obs_s, "finite, > 0 s");
-  if (!std::isfinite(p.t_obs_s) || p.t_obs_s < p.dt_obs_s)
-    bad("t_obs_s", p.t_obs_s, "finite, >= dt_obs_s (at least one sample after t0)");
-  if (p.t_obs_s / p.dt_obs_s > 1e6) bad("t_obs_s / dt_obs_s", p.t_obs_s / p.dt_obs_s, "<= 1e6 samples");
-  if (!std::isfinite(p.theta_min_rad) || !std::isfinite(p.theta_max_rad))
-    bad("theta bounds", std::isfinite(p.theta_min_rad) ? p.theta_max_rad : p.theta_min_rad, "finite");
-  if (!(p.theta_min_rad < p.theta_max_rad))
-    bad("theta_min_rad", p.theta_min_rad,
-        "< theta_max_rad = " + std::to_string(p.theta_max_rad) + " (inverted or empty bounds)");
-  if (p.theta_max_rad - p.theta_min_rad > kTwoPi + 1e-12)
-    bad("theta_max_rad - theta_min_rad", p.theta_max_rad - p.theta_min_rad, "<= 2π");
-  if (!std::isfinite(p.eps_max_rad) || p.eps_max_rad < 0.0 || p.eps_max_rad > 0.5 * kPi)
-    bad("eps_max_rad", p.eps_max_rad, "finite, in [0, π/2]");
+  require_all({{finite_in_open_closed(p.n_radps, 0.0, 1e-2), "n_radps", p.n_radps,
+                "finite, in (0, 0.01] rad/s"}});
+  validate_state(p.x_chaser_p0);
+  require_all({
+      {finite_in_open_closed(p.dv_mps, 0.0, 1e4), "dv_mps", p.dv_mps,
+       "finite, in (0, 1e4] m/s (a zero burn has no direction)"},
+      {std::isfinite(p.dt_obs_s) && p.dt_obs_s > 0.0, "dt_obs_s", p.dt_obs_s, "finite, > 0 s"},
+      {std::isfinite(p.t_obs_s) && p.t_obs_s >= p.dt_obs_s, "t_obs_s", p.t_obs_s,
+       "finite, >= dt_obs_s (at least one sample after t0)"},
+      {!(p.t_obs_s / p.dt_obs_s > 1e6), "t_obs_s / dt_obs_s", p.t_obs_s / p.dt_obs_s,
+       "<= 1e6 samples"},
+  });
+  validate_bounds(p);
 }
 
 std::vector<double> sample_times(const ObservabilityProblem& p) {
