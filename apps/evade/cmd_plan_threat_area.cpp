@@ -1,8 +1,9 @@
 // `evade plan threat-area`: paper 001 (Yu, Wang, Sun 2017) — the chaser's potential threat area
 // (sec. 2.2), the target's optimal evasive burn direction at fixed V_E (sec. 3, GA → ISRES),
 // the smallest eliminating burn (sec. 4.2, Fig. 8 / Table 3), and the transfer-time study
-// (Fig. 4). I/O only: the scenario is read by threat::read_threat_scenario and everything is
-// computed by threat::run_threat_study (src/threat/); this file parses, prints and plots.
+// (Fig. 4). I/O only: the request is read by threat::read_threat_area_request, the study run
+// by threat::run_threat_area and printed by its to_json / to_text (src/threat/); this file
+// parses the flags, prints and plots.
 // --publish sends the evasive burn at V_E (threat::make_burn_plan: one RSW impulse at t0) as
 // evade_burn_plan_t on LCM (plan_output.hpp, the same path as the other planners).
 #include <cmath>
@@ -18,8 +19,7 @@
 #include "run_program.hpp"
 #include "evade/threat/burn_plan.hpp"
 #include "plan_output.hpp"
-#include "evade/threat/threat_scenario.hpp"
-#include "evade/threat/threat_study.hpp"
+#include "evade/threat/threat_area_command.hpp"
 
 namespace evade::cli {
 namespace {
@@ -54,141 +54,6 @@ void apply_overrides(const ThreatCmdOptions& o, ThreatScenario& in) {
     throw std::invalid_argument("--dv = " + std::to_string(in.evasion_dv_mps) +
                                 " must be finite and >= 0");
   }
-}
-
-nlohmann::json vec_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-nlohmann::json counts_json(const DecisionCounts& c) {
-  return {{"two_impulse_accept", c.two_impulse_accept},
-          {"bound_reject", c.bound_reject},
-          {"sqp_threat", c.sqp_threat},
-          {"sqp_safe", c.sqp_safe},
-          {"plan_accept", c.plan_accept},
-          {"total", c.total()}};
-}
-
-nlohmann::json intervals_json(const ThreatArea& a) {
-  nlohmann::json j = nlohmann::json::array();
-  for (const auto& iv : a.intervals) j.push_back({iv.start_s, iv.end_s});
-  return j;
-}
-
-// The inputs and the chaser's cost at t0 without evasion.
-nlohmann::json summary_json(const config::Scenario& sc, const ThreatScenario& in,
-                            const ThreatStudy& s) {
-  nlohmann::json j;
-  j["scenario"] = sc.source();
-  j["n_radps"] = in.geometry.n_radps;
-  j["period_s"] = s.period_s;
-  j["dt_transfer_s"] = in.threat.transfer_s;
-  j["impulses"] = in.threat.impulses;
-  j["dv_max_mps"] = in.threat.dv_max_mps;
-  j["target_inclination_deg"] = in.target_inclination_deg;
-  j["model"] =
-      "HCW (RSW) about the target's original circular orbit; evaded target modelled by linear "
-      "relative motion about that reference; chaser coasts then transfers in dt_transfer_s with "
-      "the N-impulse minimum-dv plan; sweep over one chaser period from t0 (t0 included)";
-  j["chaser_cost_t0_mps"] = s.chaser_cost_t0_mps;
-  j["two_impulse_cost_t0_mps"] = s.two_impulse_cost_t0_mps;
-  j["t0_bound_mps"] = s.t0_bound_mps;
-  return j;
-}
-
-// How the direction search's result was certified.
-nlohmann::json search_json(const EvasionResult& r, bool use_isres) {
-  const SearchCertificate& c = r.certificate;
-  const char* method = r.dv_mps == 0.0 ? "none (V_E = 0)" : use_isres ? "isres" : "sweep+bobyqa";
-  return {{"method", method},
-          {"grid_evaluations", c.grid_evaluations},
-          {"local_evaluations", c.local_evaluations},
-          {"local_starts", c.local_starts},
-          {"local_spread_s", c.local_spread_s},
-          {"lower_bound_arc_s", c.lower_bound_arc_s},
-          {"bound_cells", c.bound_cells},
-          {"open_cells", c.open_cells},
-          {"certified", c.certified},
-          {"certify_runtime_s", c.certify_runtime_s},
-          {"evaluations", r.evaluations},
-          {"wall_time_s", r.runtime_s}};
-}
-
-// The optimal direction at V_E.
-void add_evasion_json(const ThreatStudy& s, bool use_isres, nlohmann::json& j) {
-  const EvasionResult& r = s.evasion;
-  j["runtime_s"] = s.runtime_s;
-  j["dv_mps"] = r.dv_mps;
-  j["threat_arc_s"] = r.area.arc_s;
-  j["threat_arc_deg"] = r.area.arc_deg;
-  j["grid_arc_s"] = r.area.grid_arc_s;
-  j["intervals"] = intervals_json(r.area);
-  j["alpha_rad"] = r.alpha_rad;
-  j["theta_rad"] = r.theta_rad;
-  j["dv_vvlh_mps"] = vec_json(r.dv_vvlh_mps);
-  j["dv_rsw_mps"] = vec_json(r.dv_rsw_mps);
-  j["evaluations"] = r.evaluations;
-  j["decisions"] = counts_json(r.counts);
-  j["search"] = search_json(r, use_isres);
-}
-
-void add_elimination_json(const ThreatStudy& s, nlohmann::json& j) {
-  const EliminationResult& e = *s.elimination;
-  j["eliminating_dv_mps"] = e.eliminating_dv_mps;
-  j["eliminating_lower_bracket_mps"] = e.threatened_dv_mps;
-  j["eliminating_alpha_rad"] = e.best.alpha_rad;
-  j["eliminating_theta_rad"] = e.best.theta_rad;
-  j["eliminating_dv_vvlh_mps"] = vec_json(e.best.dv_vvlh_mps);
-  j["eliminating_to_dv_max_ratio"] = s.eliminating_to_dv_max_ratio;
-  j["eliminating_over_t0_bound"] = s.eliminating_over_t0_bound;
-  j["elimination_evaluations"] = e.evaluations;
-  j["elimination_bisection_steps"] = e.bisection_steps;
-  j["elimination_runtime_s"] = s.elimination_runtime_s;
-}
-
-nlohmann::json burn_row_json(const BurnSweepRow& row) {
-  const EvasionResult& q = row.evasion;
-  return {{"dv_mps", q.dv_mps},
-          {"threat_arc_s", q.area.arc_s},
-          {"threat_arc_deg", q.area.arc_deg},
-          {"alpha_rad", q.alpha_rad},
-          {"theta_rad", q.theta_rad},
-          {"intervals", intervals_json(q.area)},
-          {"evaluations", q.evaluations},
-          {"runtime_s", row.runtime_s}};
-}
-
-nlohmann::json transfer_row_json(const TransferStudyRow& r) {
-  nlohmann::json row = {{"dt_transfer_s", r.dt_transfer_s}};
-  for (int n = 2; n <= 4; ++n) {
-    row["cost_t0_mps_" + std::to_string(n) + "_impulses"] = r.cost_t0_mps[n - 2];
-  }
-  row["primer_max_t0"] = r.primer_max_t0;
-  row["primer_lower_bound_t0_mps"] = r.primer_lower_bound_t0_mps;
-  row["t0_bound_mps"] = r.t0_bound_mps;
-  if (r.elimination) {
-    row["eliminating_dv_mps"] = r.elimination->eliminating_dv_mps;
-    row["eliminating_alpha_rad"] = r.elimination->best.alpha_rad;
-    row["eliminating_theta_rad"] = r.elimination->best.theta_rad;
-    row["runtime_s"] = r.elimination_runtime_s;
-  }
-  return row;
-}
-
-nlohmann::json study_json(const config::Scenario& sc, const ThreatScenario& in,
-                          const ThreatStudy& s) {
-  nlohmann::json j = summary_json(sc, in, s);
-  add_evasion_json(s, in.evasion.use_isres, j);
-  if (s.elimination) add_elimination_json(s, j);
-  if (!s.sweep_dv.empty()) {
-    j["sweep_dv"] = nlohmann::json::array();
-    for (const auto& row : s.sweep_dv) j["sweep_dv"].push_back(burn_row_json(row));
-  }
-  if (!s.sweep_transfer.empty()) {
-    j["sweep_transfer"] = nlohmann::json::array();
-    for (const auto& row : s.sweep_transfer) j["sweep_transfer"].push_back(transfer_row_json(row));
-  }
-  j["total_runtime_s"] = s.total_runtime_s;
-  j["parameters"] = sc.used();
-  return j;
 }
 
 void progress_elim(double lo, double hi) {
@@ -236,46 +101,22 @@ bool write_plot(const std::string& png, const nlohmann::json& j) {
   return true;
 }
 
-void print_text(const ThreatScenario& in, const ThreatStudy& s) {
-  const EvasionResult& r = s.evasion;
-  std::printf("threat area (paper 001): dT = %.1f s, %d impulses, dv_max = %.1f m/s\n",
-              in.threat.transfer_s, in.threat.impulses, in.threat.dv_max_mps);
-  std::printf("  chaser cost at t0 without evasion: %.3f m/s\n", s.chaser_cost_t0_mps);
-  std::printf("  V_E = %.3f m/s: arc %.2f s (%.3f deg), alpha %.4f rad, theta %.4f rad, "
-              "%ld evaluations, %.3f s\n",
-              r.dv_mps, r.area.arc_s, r.area.arc_deg, r.alpha_rad, r.theta_rad, r.evaluations,
-              s.runtime_s);
-  const SearchCertificate& c = r.certificate;
-  if (c.grid_evaluations > 0 && c.bound_cells > 0) {
-    std::printf("  search: sweep %ld + BOBYQA %ld evaluations; no direction's arc is below "
-                "%.2f s (%ld cells bounded, %s)\n",
-                c.grid_evaluations, c.local_evaluations, c.lower_bound_arc_s, c.bound_cells,
-                c.certified ? "certified" : "not certified within the tolerance");
-  }
-  if (s.elimination) {
-    std::printf("  eliminating V_E = %.3f m/s (%.1f%% of dv_max; t0 bound %.3f m/s)\n",
-                s.elimination->eliminating_dv_mps, 100.0 * s.eliminating_to_dv_max_ratio,
-                s.t0_bound_mps);
-  }
-}
-
-int run_threat_area(const ThreatCmdOptions& o) {
-  const config::Scenario sc = load_scenario(o.common);
-  ThreatScenario in = read_threat_scenario(sc);
-  apply_overrides(o, in);
-  ThreatStudyRequest request;
-  request.eliminate = o.eliminate;
-  request.sweep_dv_mps = o.sweep_dv;
-  request.sweep_transfer_s = o.sweep_transfer;
-  const ThreatStudy study = run_threat_study(in, request, stderr_progress());
-  nlohmann::json j = study_json(sc, in, study);
+int run_command(const ThreatCmdOptions& o) {
+  ThreatAreaRequest req = read_threat_area_request(load_scenario(o.common));
+  apply_overrides(o, req.scenario);
+  req.study.eliminate = o.eliminate;
+  req.study.sweep_dv_mps = o.sweep_dv;
+  req.study.sweep_transfer_s = o.sweep_transfer;
+  req.progress = stderr_progress();
+  const ThreatAreaResult r = run_threat_area(req);
+  nlohmann::json j = to_json(r);
   const int uplink_rc =
-      plan_wanted(o.out) ? output_plan(o.out, make_burn_plan(study.evasion, plan_id(o.out)), &j) : 0;
+      plan_wanted(o.out) ? output_plan(o.out, make_burn_plan(r.study.evasion, plan_id(o.out)), &j) : 0;
   if (!o.plot.empty() && !write_plot(o.plot, j)) return 1;
   if (o.common.json) {
     print_json(j);
   } else {
-    print_text(in, study);
+    std::fputs(to_text(r).c_str(), stdout);
   }
   return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
@@ -295,7 +136,7 @@ Runner setup(CLI::App& app) {
       ->delimiter(',');
   app.add_option("--plot", o->plot, "PNG file for the sweep plots (scripts/plot_threat.py)");
   add_plan_output_options(app, o->out);
-  return [o]() { return run_threat_area(*o); };
+  return [o]() { return run_command(*o); };
 }
 
 const bool kRegistered = register_command(

@@ -1,9 +1,11 @@
 // --publish of the planners (plan_output.hpp).
 #include "plan_output.hpp"
 
-#include "evade/guidance/plan_executor.hpp"
 #include <cstdio>
 #include <stdexcept>
+
+#include "evade/config/json_values.hpp"
+#include "evade/guidance/plan_executor.hpp"
 
 #include "evade/lcm_link/burn_plan_publisher.hpp"
 #include "evade/lcm_link/command_uplink.hpp"
@@ -38,18 +40,25 @@ std::int64_t plan_id(const PlanOutputOptions& o) { return o.seq; }
 
 namespace {
 
+// What was sent: channel, seq, send time, the plan's t = 0 (the send time unless
+// --epoch-utime), frame and impulses.
+nlohmann::json published_json(const PlanOutputOptions& o, const BurnPlan& plan,
+                              std::int64_t utime) {
+  return {{"channel", o.channel},
+          {"seq", o.seq},
+          {"utime", utime},
+          {"epoch_utime", o.epoch_utime_us != 0 ? o.epoch_utime_us : utime},
+          {"frame", o.frame},
+          {"n_impulses", plan.n_impulses},
+          {"impulses", impulses_json(plan)}};
+}
+
 int uplink_signed(const PlanOutputOptions& o, const BurnPlan& plan,
                   const lcm_link::PlanStamp& stamp, nlohmann::json* j) {
   const guidance_lcm::SigningKey key = lcm_link::load_command_key(o.sign.key_file, o.sign.key_id);
   const lcm_link::UplinkOptions u = uplink_options(o.sign, o.lcm_url);
   const lcm_link::UplinkResult r = lcm_link::uplink_plan(u, o.channel, plan, o.seq, stamp, key);
-  (*j)["published"] = {{"channel", o.channel},
-                       {"seq", o.seq},
-                       {"utime", r.first_utime},
-                       {"epoch_utime", o.epoch_utime_us != 0 ? o.epoch_utime_us : r.first_utime},
-                       {"frame", o.frame},
-                       {"n_impulses", plan.n_impulses},
-                       {"impulses", impulses_json(plan)}};
+  (*j)["published"] = published_json(o, plan, r.first_utime);
   (*j)["uplink"] = uplink_json(r, key.id);
   (void)std::fprintf(stderr, "evade: plan %ld %s (%s) after %d transmission(s)\n", o.seq,
                      lcm_link::outcome_name(r.outcome), r.reason.c_str(), r.transmissions);
@@ -62,11 +71,9 @@ nlohmann::json impulses_json(const BurnPlan& plan) {
   nlohmann::json a = nlohmann::json::array();
   for (int i = 0; i < plan.n_impulses; ++i) {
     const ImpulsiveBurn& b = plan.impulses[static_cast<std::size_t>(i)];
-    const Vec3& r = b.dv_rsw_mps;
-    const Vec3& e = b.dv_eci_mps;
     a.push_back({{"t_s", b.t_s},
-                 {"dv_rsw_mps", {r.x(), r.y(), r.z()}},
-                 {"dv_eci_mps", b.dv_eci_valid ? nlohmann::json({e.x(), e.y(), e.z()})
+                 {"dv_rsw_mps", config::vec_json(b.dv_rsw_mps)},
+                 {"dv_eci_mps", b.dv_eci_valid ? config::vec_json(b.dv_eci_mps)
                                                : nlohmann::json(nullptr)}});
   }
   return a;
@@ -90,13 +97,7 @@ int output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json
   (void)std::fprintf(stderr, "evade: publishing an unsigned plan (no --key): a guidance node "
                      "whose policy requires signed plans (the default) refuses it\n");
   const std::int64_t utime = lcm_link::publish_burn_plan(o.lcm_url, o.channel, plan, o.seq, stamp);
-  (*j)["published"] = {{"channel", o.channel},
-                       {"seq", o.seq},
-                       {"utime", utime},
-                       {"epoch_utime", o.epoch_utime_us != 0 ? o.epoch_utime_us : utime},
-                       {"frame", o.frame},
-                       {"n_impulses", plan.n_impulses},
-                       {"impulses", impulses_json(plan)}};
+  (*j)["published"] = published_json(o, plan, utime);
   return 0;
 }
 

@@ -58,10 +58,9 @@ MeanElements osculating_angles(const StateEci& s, double mu) {
   return m;
 }
 
-std::vector<StateEci> propagate_with_burns(const StateEci& s0, const std::vector<double>& t_s,
-                                           const std::vector<TangentialBurn>& burns,
-                                           const EarthModel& earth, const AdaptiveOptions& opt,
-                                           std::vector<AppliedBurn>* applied) {
+namespace {
+
+void check_sample_times(const std::vector<double>& t_s) {
   for (std::size_t k = 0; k < t_s.size(); ++k) {
     if (!std::isfinite(t_s[k]) || t_s[k] < 0.0 || (k > 0 && t_s[k] < t_s[k - 1])) {
       throw std::invalid_argument("propagate_with_burns: sample times must be finite, >= 0 and "
@@ -69,6 +68,9 @@ std::vector<StateEci> propagate_with_burns(const StateEci& s0, const std::vector
                                   std::to_string(t_s[k]) + ")");
     }
   }
+}
+
+void check_burns(const std::vector<TangentialBurn>& burns) {
   for (std::size_t k = 0; k < burns.size(); ++k) {
     if (!std::isfinite(burns[k].t_s) || burns[k].t_s < 0.0 ||
         (k > 0 && burns[k].t_s <= burns[k - 1].t_s) || !std::isfinite(burns[k].delta_a_m)) {
@@ -77,57 +79,83 @@ std::vector<StateEci> propagate_with_burns(const StateEci& s0, const std::vector
                                   " at t_s = " + std::to_string(burns[k].t_s) + ")");
     }
   }
+}
+
+// The samples of t_s, taken segment by segment: the current segment ends at t_end (at its
+// burn), the last one takes every remaining sample. A sample belongs to a segment when it
+// lies before that segment's burn (a sample at a burn time gets the post-burn state).
+struct Sampler {
+  const std::vector<double>& t_s;
+  std::vector<StateEci> out;
+  std::size_t next = 0;
+  double t_end = 0.0;
+  bool last = false;
+  /// The next sample is due at time t and belongs to the current segment.
+  bool due(double t) const {
+    return next < t_s.size() && t_s[next] <= t && (last || t_s[next] < t_end);
+  }
+};
+
+// Integrates from (t, x) to the segment's end, taking the samples passed on the way.
+void integrate_segment(Dop853<Vec6>& integ, Sampler& s, double& t, Vec6& x) {
+  integ.reset(t, x);
+  while (integ.t_s() < s.t_end) {
+    if (!integ.step(s.t_end)) {
+      throw std::runtime_error("propagate_with_burns: " + integ.failure_reason());
+    }
+    while (s.due(integ.t_s())) {
+      const double ts = s.t_s[s.next];
+      s.out[s.next++] = StateEci::from_stacked(ts == integ.t_s() ? integ.x() : integ.dense(ts));
+    }
+  }
+  x = integ.x();
+  t = s.t_end;
+}
+
+// Adds the burn's tangential Δv (vis-viva) to x, and records it when asked.
+void apply_burn(const TangentialBurn& burn, double mu, Vec6& x,
+                std::vector<AppliedBurn>* applied) {
+  const StateEci pre = StateEci::from_stacked(x);
+  const double dv = tangential_dv_for_delta_a(pre, burn.delta_a_m, mu);
+  if (applied != nullptr) {
+    AppliedBurn ab;
+    ab.t_s = burn.t_s;
+    ab.delta_a_m = burn.delta_a_m;
+    ab.dv_mps = dv;
+    ab.a_before_m = 1.0 / (2.0 / pre.r_eci_m.norm() - pre.v_eci_mps.squaredNorm() / mu);
+    ab.dv_approx_mps = 0.5 * std::sqrt(mu / std::pow(ab.a_before_m, 3)) * burn.delta_a_m;
+    applied->push_back(ab);
+  }
+  x.tail<3>() += dv * pre.v_eci_mps.normalized();
+}
+
+}  // namespace
+
+std::vector<StateEci> propagate_with_burns(const StateEci& s0, const std::vector<double>& t_s,
+                                           const std::vector<TangentialBurn>& burns,
+                                           const EarthModel& earth, const AdaptiveOptions& opt,
+                                           std::vector<AppliedBurn>* applied) {
+  check_sample_times(t_s);
+  check_burns(burns);
   if (applied != nullptr) applied->clear();
   auto rhs = [&earth](double, const Vec6& x) {
     return orbit_derivative(x, GravityModel::kTwoBodyJ2, earth);
   };
-  std::vector<StateEci> out(t_s.size());
+  Sampler s{t_s, std::vector<StateEci>(t_s.size())};
   Dop853<Vec6> integ(rhs, opt);
   Vec6 x = s0.stacked();
   double t = 0.0;
-  std::size_t next = 0;
   const std::size_t nb = burns.size();
   const double t_last = t_s.empty() ? 0.0 : t_s.back();
-  // Segment seg runs from t to the burn seg (or to the last sample); a sample belongs to it
-  // when it lies before that burn (a sample at a burn time gets the post-burn state).
+  // Segment seg runs from t to the burn seg (or to the last sample).
   for (std::size_t seg = 0; seg <= nb; ++seg) {
-    const double t_end_seg = (seg < nb) ? burns[seg].t_s : std::max(t_last, t);
-    auto in_seg = [&](double ts) { return seg == nb || ts < t_end_seg; };
-    while (next < t_s.size() && t_s[next] <= t && in_seg(t_s[next])) {
-      out[next++] = StateEci::from_stacked(x);
-    }
-    if (t_end_seg > t) {
-      integ.reset(t, x);
-      while (integ.t_s() < t_end_seg) {
-        if (!integ.step(t_end_seg)) {
-          throw std::runtime_error("propagate_with_burns: " + integ.failure_reason());
-        }
-        while (next < t_s.size() && t_s[next] <= integ.t_s() && in_seg(t_s[next])) {
-          const double ts = t_s[next];
-          out[next++] = StateEci::from_stacked(ts == integ.t_s() ? integ.x() : integ.dense(ts));
-        }
-      }
-      x = integ.x();
-      t = t_end_seg;
-    }
-    if (seg < nb) {
-      const StateEci pre = StateEci::from_stacked(x);
-      const double dv = tangential_dv_for_delta_a(pre, burns[seg].delta_a_m, earth.mu_m3ps2);
-      if (applied != nullptr) {
-        AppliedBurn ab;
-        ab.t_s = burns[seg].t_s;
-        ab.delta_a_m = burns[seg].delta_a_m;
-        ab.dv_mps = dv;
-        ab.a_before_m =
-            1.0 / (2.0 / pre.r_eci_m.norm() - pre.v_eci_mps.squaredNorm() / earth.mu_m3ps2);
-        ab.dv_approx_mps =
-            0.5 * std::sqrt(earth.mu_m3ps2 / std::pow(ab.a_before_m, 3)) * burns[seg].delta_a_m;
-        applied->push_back(ab);
-      }
-      x.tail<3>() += dv * pre.v_eci_mps.normalized();
-    }
+    s.last = seg == nb;
+    s.t_end = s.last ? std::max(t_last, t) : burns[seg].t_s;
+    while (s.due(t)) s.out[s.next++] = StateEci::from_stacked(x);
+    if (s.t_end > t) integrate_segment(integ, s, t, x);
+    if (!s.last) apply_burn(burns[seg], earth.mu_m3ps2, x, applied);
   }
-  return out;
+  return std::move(s.out);
 }
 
 }  // namespace evade::formation

@@ -79,6 +79,51 @@ void FormationSpec::validate() const {
   }
 }
 
+namespace {
+
+// The inter-group RAAN and phase rows of group g against the reference group.
+void add_inter_group(const FormationSpec& spec, std::size_t g, std::vector<ConstraintDef>& out) {
+  const std::size_t ref = spec.reference_group;
+  const Group& gr = spec.groups[g];
+  const std::string tag = "(" + gr.name + "-" + spec.groups[ref].name + ")";
+  ConstraintDef c;
+  c.first = {g, Role::kChief};
+  c.second = {ref, Role::kChief};
+  c.kind = ConstraintKind::kInterGroupRaan;
+  c.name = std::string("inter_group_raan") + tag;
+  c.nominal = gr.nominal_raan_offset_rad;
+  c.lower = -spec.raan_tolerance_rad;
+  c.upper = spec.raan_tolerance_rad;
+  out.push_back(c);
+  c.kind = ConstraintKind::kInterGroupPhase;
+  c.name = std::string("inter_group_phase") + tag;
+  c.nominal = gr.nominal_phase_offset_rad;
+  c.lower = -spec.phase_tolerance_rad;
+  c.upper = spec.phase_tolerance_rad;
+  out.push_back(c);
+}
+
+// One box row (out-of-plane or in-plane) per deputy of group g: band [lower, upper] about
+// the nominal value.
+void add_box_rows(const FormationSpec& spec, std::size_t g, ConstraintKind kind,
+                  const std::string& prefix, double nominal, double lower, double upper,
+                  std::vector<ConstraintDef>& out) {
+  const std::string gname = "(" + spec.groups[g].name + ")";
+  for (Role dep : {Role::kDeputy1, Role::kDeputy2}) {
+    ConstraintDef c;
+    c.first = {g, dep};
+    c.second = {g, Role::kChief};
+    c.kind = kind;
+    c.name = prefix + role_name(dep) + gname;
+    c.nominal = nominal;
+    c.lower = lower;
+    c.upper = upper;
+    out.push_back(c);
+  }
+}
+
+}  // namespace
+
 std::vector<ConstraintDef> constraints_for(const FormationSpec& spec,
                                            const SatelliteId& threatened) {
   spec.validate();
@@ -88,57 +133,19 @@ std::vector<ConstraintDef> constraints_for(const FormationSpec& spec,
   }
   std::vector<ConstraintDef> out;
   const std::size_t ref = spec.reference_group;
-  auto inter = [&](std::size_t g) {
-    const Group& gr = spec.groups[g];
-    const std::string tag = "(" + gr.name + "-" + spec.groups[ref].name + ")";
-    ConstraintDef c;
-    c.first = {g, Role::kChief};
-    c.second = {ref, Role::kChief};
-    c.kind = ConstraintKind::kInterGroupRaan;
-    c.name = std::string("inter_group_raan") + tag;
-    c.nominal = gr.nominal_raan_offset_rad;
-    c.lower = -spec.raan_tolerance_rad;
-    c.upper = spec.raan_tolerance_rad;
-    out.push_back(c);
-    c.kind = ConstraintKind::kInterGroupPhase;
-    c.name = std::string("inter_group_phase") + tag;
-    c.nominal = gr.nominal_phase_offset_rad;
-    c.lower = -spec.phase_tolerance_rad;
-    c.upper = spec.phase_tolerance_rad;
-    out.push_back(c);
-  };
   if (threatened.group != ref) {
-    inter(threatened.group);
+    add_inter_group(spec, threatened.group, out);
   } else {
     for (std::size_t g = 0; g < spec.groups.size(); ++g) {
-      if (g != ref) inter(g);
+      if (g != ref) add_inter_group(spec, g, out);
     }
   }
   const double d = spec.box_delta_m;
   const double l = spec.side_length_m;
-  const std::string gname = "(" + spec.groups[threatened.group].name + ")";
-  for (Role dep : {Role::kDeputy1, Role::kDeputy2}) {
-    ConstraintDef c;
-    c.first = {threatened.group, dep};
-    c.second = {threatened.group, Role::kChief};
-    c.kind = ConstraintKind::kOutOfPlane;
-    c.name = std::string("out_of_plane_") + role_name(dep) + gname;
-    c.nominal = l * std::sqrt(3.0) / 2.0;
-    c.lower = -6.0 * d;
-    c.upper = 3.0 * d;
-    out.push_back(c);
-  }
-  for (Role dep : {Role::kDeputy1, Role::kDeputy2}) {
-    ConstraintDef c;
-    c.first = {threatened.group, dep};
-    c.second = {threatened.group, Role::kChief};
-    c.kind = ConstraintKind::kInPlane;
-    c.name = std::string("in_plane_") + role_name(dep) + gname;
-    c.nominal = l / 2.0;
-    c.lower = -d;
-    c.upper = 4.0 * d;
-    out.push_back(c);
-  }
+  add_box_rows(spec, threatened.group, ConstraintKind::kOutOfPlane, "out_of_plane_",
+               l * std::sqrt(3.0) / 2.0, -6.0 * d, 3.0 * d, out);
+  add_box_rows(spec, threatened.group, ConstraintKind::kInPlane, "in_plane_", l / 2.0, -d,
+               4.0 * d, out);
   return out;
 }
 

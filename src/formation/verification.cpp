@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace evade::formation {
 
@@ -51,6 +54,64 @@ Verification verify(const FormationSpec& spec, const SatelliteId& threatened,
   return v;
 }
 
+namespace {
+
+/// The margin of one row at the end of the window after a Δa [m] held from the burn.
+using MarginFn = std::function<double(double delta_a_m)>;
+
+struct Bracket {
+  double lo = 0.0, f_lo = 0.0;  ///< |Δa| keeping the row (margin f_lo > 0)
+  double hi = 0.0, f_hi = 0.0;  ///< |Δa| breaking it (f_hi <= 0)
+};
+
+// Illinois regula falsi on the bracket, in direction d (+1 raise, −1 lower): stops at the
+// relative width rel_tol or when a margin is within zero_tol of 0.
+double illinois(const MarginFn& margin_at, double d, Bracket b, double rel_tol, double zero_tol) {
+  int side = 0;
+  for (int it = 0; it < 60 && (b.hi - b.lo) > rel_tol * b.hi; ++it) {
+    const double xm = (b.lo * b.f_hi - b.hi * b.f_lo) / (b.f_hi - b.f_lo);
+    const double fm = margin_at(d * xm);
+    if (fm > 0.0) {
+      b.lo = xm;
+      b.f_lo = fm;
+      if (side == -1) b.f_hi *= 0.5;
+      side = -1;
+    } else {
+      b.hi = xm;
+      b.f_hi = fm;
+      if (side == 1) b.f_lo *= 0.5;
+      side = 1;
+    }
+    if (std::abs(fm) < zero_tol) b.lo = b.hi = xm;
+  }
+  return 0.5 * (b.lo + b.hi);
+}
+
+// The numerical limit of one row in direction d: bracketed from the analytic value (1.2×,
+// doubling up to 100×), then regula falsi. 0 when the analytic limit is 0; +inf when it is
+// infinite or not reached within 100× of it.
+double limit_in_direction(const MarginFn& margin_at, const ConstraintLimit& row, double d,
+                          double rel_tol) {
+  const double guess = d > 0 ? row.raise_max_m : row.lower_max_m;
+  if (guess == 0.0) return 0.0;
+  if (!std::isfinite(guess)) return kNoLimit;
+  Bracket b;
+  b.f_lo = margin(row.def, row.deviation);
+  b.hi = 1.2 * guess;
+  b.f_hi = margin_at(d * b.hi);
+  while (b.f_hi > 0.0 && b.hi < 100.0 * guess) {
+    b.lo = b.hi;
+    b.f_lo = b.f_hi;
+    b.hi *= 2.0;
+    b.f_hi = margin_at(d * b.hi);
+  }
+  if (b.f_hi > 0.0) return kNoLimit;  // not reached within 100x the analytic value
+  return illinois(margin_at, d, b, rel_tol,
+                  1e-9 * (std::abs(row.def.upper) + std::abs(row.def.lower)));
+}
+
+}  // namespace
+
 std::vector<NumericalLimitRow> numerical_limits(const FormationSpec& spec,
                                                 const SatelliteId& threatened,
                                                 const LimitsResult& analytic, double burn_time_s,
@@ -67,55 +128,14 @@ std::vector<NumericalLimitRow> numerical_limits(const FormationSpec& spec,
     const ConstraintLimit& row = analytic.rows[r];
     NumericalLimitRow nr;
     nr.name = row.def.name;
-    if (!row.involves_threatened) {
-      out.push_back(nr);
-      continue;
-    }
-    auto margin_at = [&](double delta_a) {
-      ++nr.propagations;
-      const std::vector<DeviationSeries> s = fp.series({{burn_time_s, delta_a}});
-      return margin(row.def, value_at(s[r], t_eval));
-    };
-    for (double d : {1.0, -1.0}) {
-      const double guess = d > 0 ? row.raise_max_m : row.lower_max_m;
-      double result = kNoLimit;
-      if (guess == 0.0) {
-        result = 0.0;
-      } else if (std::isfinite(guess)) {
-        double lo = 0.0, f_lo = margin(row.def, row.deviation);
-        double hi = 1.2 * guess, f_hi = margin_at(d * hi);
-        while (f_hi > 0.0 && hi < 100.0 * guess) {
-          lo = hi;
-          f_lo = f_hi;
-          hi *= 2.0;
-          f_hi = margin_at(d * hi);
-        }
-        if (f_hi > 0.0) {
-          result = kNoLimit;  // not reached within 100x the analytic value
-        } else {
-          int side = 0;  // Illinois regula falsi
-          for (int it = 0; it < 60 && (hi - lo) > rel_tol * hi; ++it) {
-            const double xm = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-            const double fm = margin_at(d * xm);
-            if (fm > 0.0) {
-              lo = xm;
-              f_lo = fm;
-              if (side == -1) f_hi *= 0.5;
-              side = -1;
-            } else {
-              hi = xm;
-              f_hi = fm;
-              if (side == 1) f_lo *= 0.5;
-              side = 1;
-            }
-            if (std::abs(fm) < 1e-9 * (std::abs(row.def.upper) + std::abs(row.def.lower))) {
-              lo = hi = xm;
-            }
-          }
-          result = 0.5 * (lo + hi);
-        }
-      }
-      (d > 0 ? nr.raise_max_m : nr.lower_max_m) = result;
+    if (row.involves_threatened) {
+      const MarginFn margin_at = [&](double delta_a) {
+        ++nr.propagations;
+        const std::vector<DeviationSeries> s = fp.series({{burn_time_s, delta_a}});
+        return margin(row.def, value_at(s[r], t_eval));
+      };
+      nr.raise_max_m = limit_in_direction(margin_at, row, 1.0, rel_tol);
+      nr.lower_max_m = limit_in_direction(margin_at, row, -1.0, rel_tol);
     }
     out.push_back(nr);
   }

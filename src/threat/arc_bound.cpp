@@ -110,13 +110,10 @@ double ArcBound::certain_edge(double certain_t, double other_t, const Ball& ball
   return c;
 }
 
-double ArcBound::lower_bound_s(const Vec3& e_rsw, double dv_mps, double chord,
-                               bool refine_edges) const {
-  const Ball ball{e_rsw, dv_mps, chord};
+std::vector<char> ArcBound::certain_points(const Ball& ball) const {
   const double vmax = solver_.options().dv_max_mps;
-  const double span = solver_.options().span_s;
   const long k = static_cast<long>(t_.size());
-  const Vec3 dv = dv_mps * e_rsw;
+  const Vec3 dv = ball.dv_mps * ball.e;
   std::vector<char> sure(k, 0);
   const HcwTransfer& tr = solver_.transfer();
   for (long i = 0; i < k; ++i) {
@@ -124,29 +121,38 @@ double ArcBound::lower_bound_s(const Vec3& e_rsw, double dv_mps, double chord,
     const Vec6 d = w_[i] + b_[i] * dv;
     const double j2 = tr.two_impulse_cost(d);
     if (j2 > vmax) continue;
-    if (j2 + (maps_[i].n1 + maps_[i].n2) * dv_mps * chord * (1.0 + 1e-12) <= vmax) {
+    if (j2 + (maps_[i].n1 + maps_[i].n2) * ball.dv_mps * ball.chord * (1.0 + 1e-12) <= vmax) {
       sure[i] = 1;
       continue;
     }
     sure[i] = cost_upper(d, maps_[i], ball, false, t_[i]) <= vmax ? 1 : 0;
   }
-  if (refine_edges && solver_.options().impulses > 2) {
-    // Grid points next to a certain one may be certain with the SQP's plan: grow the runs
-    // outward (and fill gaps) until a point is not; each point is tested once.
-    std::vector<char> tested(k, 0);
-    for (bool grew = true; grew;) {
-      grew = false;
-      for (long i = 0; i < k; ++i) {
-        const bool next_to = (i > 0 && sure[i - 1]) || (i + 1 < k && sure[i + 1]);
-        if (sure[i] || tested[i] || !next_to) continue;
-        tested[i] = 1;
-        if (cost_upper(w_[i] + b_[i] * dv, maps_[i], ball, true, t_[i]) <= vmax) {
-          sure[i] = 1;
-          grew = true;
-        }
+  return sure;
+}
+
+void ArcBound::grow_runs(std::vector<char>& sure, const Ball& ball) const {
+  const double vmax = solver_.options().dv_max_mps;
+  const long k = static_cast<long>(t_.size());
+  const Vec3 dv = ball.dv_mps * ball.e;
+  std::vector<char> tested(k, 0);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (long i = 0; i < k; ++i) {
+      const bool next_to = (i > 0 && sure[i - 1]) || (i + 1 < k && sure[i + 1]);
+      if (sure[i] || tested[i] || !next_to) continue;
+      tested[i] = 1;
+      if (cost_upper(w_[i] + b_[i] * dv, maps_[i], ball, true, t_[i]) <= vmax) {
+        sure[i] = 1;
+        grew = true;
       }
     }
   }
+}
+
+double ArcBound::runs_length(const std::vector<char>& sure, const Ball& ball,
+                             bool refine_edges) const {
+  const double span = solver_.options().span_s;
+  const long k = static_cast<long>(t_.size());
   double bound = 0.0;
   for (long i = 0; i < k;) {
     if (!sure[i]) {
@@ -168,6 +174,18 @@ double ArcBound::lower_bound_s(const Vec3& e_rsw, double dv_mps, double chord,
     i = j + 1;
   }
   return bound;
+}
+
+double ArcBound::lower_bound_s(const Vec3& e_rsw, double dv_mps, double chord,
+                               bool refine_edges) const {
+  const Ball ball{e_rsw, dv_mps, chord};
+  std::vector<char> sure = certain_points(ball);
+  if (refine_edges && solver_.options().impulses > 2) {
+    // Grid points next to a certain one may be certain with the SQP's plan: grow the runs
+    // outward (and fill gaps) until a point is not; each point is tested once.
+    grow_runs(sure, ball);
+  }
+  return runs_length(sure, ball, refine_edges);
 }
 
 }  // namespace evade::threat

@@ -41,13 +41,13 @@ double arc_objective(unsigned, const double* x, double*, void* data) {
   return a.arc_s;
 }
 
-void check_options(const EvasionOptions& opt) {
-  auto bad = [](const std::string& f, double v, const std::string& allowed) {
-    throw std::invalid_argument("evasion optimizer: " + f + " = " + std::to_string(v) +
-                                " is invalid; allowed: " + allowed);
-  };
-  if (opt.population < 2) bad("population", opt.population, ">= 2");
-  if (opt.max_evaluations < 1) bad("max_evaluations", opt.max_evaluations, ">= 1");
+[[noreturn]] void bad(const std::string& f, double v, const std::string& allowed) {
+  throw std::invalid_argument("evasion optimizer: " + f + " = " + std::to_string(v) +
+                              " is invalid; allowed: " + allowed);
+}
+
+// The (α, θ) box of the search.
+void check_box(const EvasionOptions& opt) {
   if (!(opt.alpha_min_rad < opt.alpha_max_rad) || opt.alpha_min_rad < -(0.5 * kPi) ||
       opt.alpha_max_rad > (0.5 * kPi)) {
     bad("alpha_min_rad", opt.alpha_min_rad, "-pi/2 <= alpha_min < alpha_max <= pi/2");
@@ -56,6 +56,12 @@ void check_options(const EvasionOptions& opt) {
       opt.theta_max_rad > kPi + 1e-12) {
     bad("theta_min_rad", opt.theta_min_rad, "-pi <= theta_min < theta_max <= pi");
   }
+}
+
+void check_options(const EvasionOptions& opt) {
+  if (opt.population < 2) bad("population", opt.population, ">= 2");
+  if (opt.max_evaluations < 1) bad("max_evaluations", opt.max_evaluations, ">= 1");
+  check_box(opt);
   if (opt.sweep_alpha_cells < 1) bad("sweep_alpha_cells", opt.sweep_alpha_cells, ">= 1");
   if (opt.sweep_theta_cells < 4) bad("sweep_theta_cells", opt.sweep_theta_cells, ">= 4");
   if (opt.local_starts < 0) bad("local_starts", opt.local_starts, ">= 0");

@@ -65,6 +65,13 @@ class ArcBound {
   bool certain(double t_s, const Ball& ball, bool sqp) const;
   /// Bisects between a certain time and an uncertain one; returns the certain end.
   double certain_edge(double certain_t, double other_t, const Ball& ball, bool sqp) const;
+  /// Grid points certain with 2-impulse plans (1 = certain).
+  std::vector<char> certain_points(const Ball& ball) const;
+  /// Marks the points next to certain runs that are certain with the SQP's plans, until
+  /// none is added.
+  void grow_runs(std::vector<char>& sure, const Ball& ball) const;
+  /// Sum of the lengths of the certain runs, each extended at both ends by bisection.
+  double runs_length(const std::vector<char>& sure, const Ball& ball, bool refine_edges) const;
 
   const ThreatAreaSolver& solver_;
   std::vector<double> t_;
