@@ -18,8 +18,11 @@
 #include "cli.hpp"
 #include "run_program.hpp"
 #include "evade/threat/burn_plan.hpp"
+#include "param_flag_option.hpp"
 #include "plan_output.hpp"
 #include "evade/threat/threat_area_command.hpp"
+#include "evade/threat/threat_params.hpp"
+#include "evade/config/read_params.hpp"
 
 namespace evade::cli {
 namespace {
@@ -28,32 +31,27 @@ using namespace evade::threat;
 
 struct ThreatCmdOptions {
   CommonOptions common;
-  double dv_mps = 0.0;
-  double dt_transfer_s = 0.0;
-  int impulses = 0;
+  std::vector<std::string> param_overrides;  ///< --dv-mps, --dt-transfer-s, --impulses
   unsigned seed = 0;
   bool eliminate = false;
   std::vector<double> sweep_dv;
   std::vector<double> sweep_transfer;
   std::string plot;
   PlanOutputOptions out;
-  CLI::Option* dv_opt = nullptr;
-  CLI::Option* dt_opt = nullptr;
-  CLI::Option* imp_opt = nullptr;
   CLI::Option* seed_opt = nullptr;
 };
 
-// Command-line overrides of scenario values; the library validates them like the scenario's
-// (exit 2 on bad input).
-void apply_overrides(const ThreatCmdOptions& o, ThreatScenario& in) {
-  if (o.dv_opt->count() > 0) in.evasion_dv_mps = o.dv_mps;
-  if (o.dt_opt->count() > 0) in.threat.transfer_s = o.dt_transfer_s;
-  if (o.imp_opt->count() > 0) in.threat.impulses = o.impulses;
-  if (o.seed_opt->count() > 0) in.evasion.seed = o.seed;
-  if (!std::isfinite(in.evasion_dv_mps) || in.evasion_dv_mps < 0.0) {
-    throw std::invalid_argument("--dv = " + std::to_string(in.evasion_dv_mps) +
-                                " must be finite and >= 0");
-  }
+// The parameter flags (evade/config/param_flags.hpp): each given value is a scenario
+// override, checked against its key's declaration.
+void add_parameter_flags(CLI::App& app, ThreatCmdOptions& o) {
+  const auto add = [&](const auto& table, const char* key) {
+    const ParamSpec* spec = config::find_param_spec(table, "", key);
+    if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
+    (void)add_param_flag(app, key, *spec, &o.param_overrides);  // registered on app
+  };
+  add(evasion_params(), "evasion.dv_mps");
+  add(threat_option_params(), "transfer.dt_s");
+  add(threat_option_params(), "transfer.impulses");
 }
 
 void progress_elim(double lo, double hi) {
@@ -102,8 +100,10 @@ bool write_plot(const std::string& png, const nlohmann::json& j) {
 }
 
 int run_command(const ThreatCmdOptions& o) {
-  ThreatAreaRequest req = read_threat_area_request(load_scenario(o.common));
-  apply_overrides(o, req.scenario);
+  config::Scenario sc = load_scenario(o.common);
+  for (const std::string& kv : o.param_overrides) sc.apply_override(kv);
+  ThreatAreaRequest req = read_threat_area_request(sc);
+  if (o.seed_opt->count() > 0) req.scenario.evasion.seed = o.seed;
   req.study.eliminate = o.eliminate;
   req.study.sweep_dv_mps = o.sweep_dv;
   req.study.sweep_transfer_s = o.sweep_transfer;
@@ -124,9 +124,7 @@ int run_command(const ThreatCmdOptions& o) {
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<ThreatCmdOptions>();
   add_common_options(app, o->common);
-  o->dv_opt = app.add_option("--dv", o->dv_mps, "evasion burn magnitude V_E [m/s]");
-  o->dt_opt = app.add_option("--dt-transfer", o->dt_transfer_s, "chaser transfer time [s]");
-  o->imp_opt = app.add_option("--impulses", o->impulses, "chaser impulses N (2..4) [-]");
+  add_parameter_flags(app, *o);
   o->seed_opt = app.add_option("--seed", o->seed, "seed: ISRES RNG / the sweep's sample position in each cell [-]");
   app.add_flag("--eliminate", o->eliminate, "find the smallest V_E with no threat area");
   app.add_option("--sweep-dv", o->sweep_dv, "list of V_E [m/s]: arc for each (Fig. 8)")
