@@ -144,51 +144,77 @@ std::string upper(std::string s) {
   return s;
 }
 
+// One base unit and its optional '**n' exponent (n in [-9, 9]) at u[*i]; *i moves past it.
+// False when there is none there.
+bool read_unit_factor(const std::string& u, std::size_t* i, std::string* base, int* power) {
+  std::size_t j = *i;
+  while (j < u.size() && (std::isalpha(static_cast<unsigned char>(u[j])) != 0 || u[j] == '%')) ++j;
+  if (j == *i) return false;
+  *base = u.substr(*i, j - *i);
+  *power = 1;
+  if (u.compare(j, 2, "**") == 0) {
+    char* end = nullptr;
+    const long p = std::strtol(u.c_str() + j + 2, &end, 10);
+    if (end == u.c_str() + j + 2 || p < -9 || p > 9) return false;
+    *power = static_cast<int>(p);
+    j = static_cast<std::size_t>(end - u.c_str());
+  }
+  *i = j;
+  return true;
+}
+
+// The signs in force while a unit expression is read.
+struct UnitSigns {
+  int next = 1;   // the next factor's sign: -1 after '/'
+  int group = 1;  // the sign of the parenthesized group being read
+};
+
+enum class UnitMark { kNone, kRead, kBad };
+
+// A separator ('*', '/') or parenthesis at c, applied to *s; kNone when c is none of them,
+// kBad for a second level of parentheses.
+UnitMark read_unit_mark(char c, UnitSigns* s) {
+  switch (c) {
+    case '/':
+      s->next = -1;
+      return UnitMark::kRead;
+    case '*':
+      return UnitMark::kRead;
+    case '(':
+      if (s->group != 1) return UnitMark::kBad;  // one level only
+      s->group = s->next;
+      s->next = 1;
+      return UnitMark::kRead;
+    case ')':
+      s->group = 1;
+      s->next = 1;
+      return UnitMark::kRead;
+    default:
+      return UnitMark::kNone;
+  }
+}
+
 // A unit expression as base units with integer exponents ("M**3/(KG*S)" and "M**3/KG/S" and
 // "M**3*KG**-1*S**-1" all give {M: 3, KG: -1, S: -1}); false when it is not one (the spellings
 // CCSDS 508.0-B-1 and other implementations write: factors joined by '*' and '/', '**n'
 // exponents, one level of parentheses after '/').
 bool unit_exponents(const std::string& unit, std::map<std::string, int>* out) {
   std::map<std::string, int> ex;
-  int sign = 1;          // the next factor's sign: -1 after '/'
-  int group_sign = 1;    // the sign of the parenthesized group being read
+  UnitSigns s;
   std::size_t i = 0;
   const std::string u = upper(unit);
   while (i < u.size()) {
-    const char c = u[i];
-    if (c == '/' || c == '*') {
-      if (c == '/') sign = -1;
+    const UnitMark m = read_unit_mark(u[i], &s);
+    if (m == UnitMark::kBad) return false;
+    if (m == UnitMark::kRead) {
       ++i;
       continue;
     }
-    if (c == '(') {
-      if (group_sign != 1) return false;  // one level only
-      group_sign = sign;
-      sign = 1;
-      ++i;
-      continue;
-    }
-    if (c == ')') {
-      group_sign = 1;
-      sign = 1;
-      ++i;
-      continue;
-    }
-    std::size_t j = i;
-    while (j < u.size() && (std::isalpha(static_cast<unsigned char>(u[j])) != 0 || u[j] == '%')) ++j;
-    if (j == i) return false;
-    const std::string base = u.substr(i, j - i);
+    std::string base;
     int power = 1;
-    if (u.compare(j, 2, "**") == 0) {
-      char* end = nullptr;
-      const long p = std::strtol(u.c_str() + j + 2, &end, 10);
-      if (end == u.c_str() + j + 2 || p < -9 || p > 9) return false;
-      power = static_cast<int>(p);
-      j = static_cast<std::size_t>(end - u.c_str());
-    }
-    ex[base] += sign * group_sign * power;
-    if (group_sign == 1) sign = 1;  // outside a group '/' applies to one factor
-    i = j;
+    if (!read_unit_factor(u, &i, &base, &power)) return false;
+    ex[base] += s.next * s.group * power;
+    if (s.group == 1) s.next = 1;  // outside a group '/' applies to one factor
   }
   for (auto it = ex.begin(); it != ex.end();) it = it->second == 0 ? ex.erase(it) : std::next(it);
   *out = std::move(ex);
@@ -208,9 +234,9 @@ bool is_variance(const std::string& key) {
          key.compare(1, u - 1, key, u + 1, std::string::npos) == 0;
 }
 
-void check_item(const CdmItem& it, CdmSectionId id) {
-  if (it.key == "COMMENT") return;
-  if (it.value.empty()) fail(it, "expected a value, found none");
+// The value as its keyword's kind wants it: a finite number, an epoch, or any text; a
+// variance (a diagonal covariance term) not negative.
+void check_value(const CdmItem& it, CdmSectionId id) {
   const Kind k = keyword_kind(it.key, id);
   if (k == Kind::kNumber) {
     char* end = nullptr;
@@ -227,10 +253,18 @@ void check_item(const CdmItem& it, CdmSectionId id) {
   if (id == CdmSectionId::kCovariance && is_variance(it.key) && std::strtod(it.value.c_str(), nullptr) < 0.0) {
     fail(it, "a variance cannot be negative, found '" + it.value + "' (malformed covariance)");
   }
+}
+
+// A unit, when written, the standard's or an equivalent spelling of it.
+void check_unit(const CdmItem& it) {
   const std::string unit = cdm_keyword_unit(it.key);
   if (!it.unit.empty() && !same_unit(it.unit, unit))
     fail(it, "expected unit [" + (unit.empty() ? std::string("none") : unit) + "], found [" +
                  it.unit + "]");
+}
+
+// An enumerated keyword's value one of the standard's (any case).
+void check_enum(const CdmItem& it) {
   const auto e = enum_values().find(it.key);
   if (e != enum_values().end() &&
       std::find(e->second.begin(), e->second.end(), upper(it.value)) == e->second.end()) {
@@ -238,6 +272,14 @@ void check_item(const CdmItem& it, CdmSectionId id) {
     for (const auto& a : e->second) allowed += (allowed.empty() ? "" : ", ") + a;
     fail(it, "expected one of " + allowed + ", found '" + it.value + "'");
   }
+}
+
+void check_item(const CdmItem& it, CdmSectionId id) {
+  if (it.key == "COMMENT") return;
+  if (it.value.empty()) fail(it, "expected a value, found none");
+  check_value(it, id);
+  check_unit(it);
+  check_enum(it);
 }
 
 void check_section(const CdmSection& s, CdmSectionId id, int last_line,

@@ -143,6 +143,28 @@ TEST(Cdm, EquivalentUnitSpellingsAreAcceptedAndNoted) {
   EXPECT_TRUE(cdm_unit_notes(read_cdm_kvn(shipped())).empty());
 }
 
+// The unit reader: factors joined by '*' and '/', '**n' exponents in [-9, 9], one level of
+// parentheses after '/', any case (an unclosed group or a trailing separator read leniently);
+// a unit that differs, or text that is not a unit, is refused.
+TEST(Cdm, UnitSpellingsOfACovarianceTerm) {
+  const auto unit_ok = [](const std::string& unit) {
+    try {
+      (void)read_cdm_kvn(edit(shipped(), "CDRG_RDOT", "CDRG_RDOT = 0.0 [" + unit + "]"));
+      return true;
+    } catch (const CdmError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected unit [m**3/(kg*s)]"), std::string::npos)
+          << e.what();
+      return false;
+    }
+  };
+  for (const char* u : {"m**3/(kg*s)", "M**3/KG/S", "m**3*kg**-1*s**-1", "kg**-1*m**3/s",
+                        "m**3/(s*kg)", "m*m**2/(kg*s)", "m**4/(kg*s*m)", "m**3/(kg*s", "m**3/kg/s/"})
+    EXPECT_TRUE(unit_ok(u)) << u;
+  for (const char* u : {"m**3/kg", "m**3/(kg/(s))", "m**3/kg**10/s",
+                        "m**3/(kg*s)/s", "m**/(kg*s)", "3/(kg*s)", "m**3/(kg*s*s)", "m^3/(kg*s)"})
+    EXPECT_FALSE(unit_ok(u)) << u;
+}
+
 TEST(Cdm, MalformedXmlNamesElementAndLine) {
   std::string xml = write_cdm_xml(read_cdm_kvn(shipped()));
   const auto p = xml.find("<X units=\"km\">153.446765</X>");

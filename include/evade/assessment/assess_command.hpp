@@ -1,0 +1,108 @@
+// `evade assess` as a library call: the collision probability of one conjunction given as
+// the states of both objects (a scenario's `conjunction:` block or a CCSDS CDM, brought to
+// TCA and assessed by assess.hpp) or as the encounter plane directly (miss and sigmas along
+// its principal axes). The request says where the encounter comes from; the result holds
+// every figure the command prints, its JSON form (to_json, the CLI's --json output) and its
+// text form (to_text). Methods (pc_2d.hpp, monte_carlo_pc.hpp): the 2D Pc of the short-term
+// encounter model (Foster & Estes 1992, NASA JSC-25898), Chan's series (Chan 2008,
+// "Spacecraft Collision Probability", eq. 5.33), Alfano's maximum Pc (Alfano 2005, "Relating
+// Position Uncertainty to Maximum Conjunction Probability") and, on request, the Monte Carlo
+// Pc (Alfano 2009, "Satellite Conjunction Monte Carlo Analysis"); the short-term validity
+// test of Chan 2008 ch. 4 and Alfano 2009.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "evade/assessment/assess.hpp"
+#include "evade/assessment/cdm.hpp"
+#include "evade/config/scenario.hpp"
+
+namespace evade::assessment {
+
+struct AssessRequest {
+  std::string source;  ///< how the result names its input ("scenario NAME", "cdm NAME", ...)
+  AssessConfig config;  ///< the assessment.* parameter table
+  /// Both objects' states and covariances (from a scenario or a CDM); or else
+  std::optional<ConjunctionInput> conjunction;
+  /// the encounter plane given directly (no states: no TCA, covariance or short-term checks).
+  std::optional<PrincipalEncounter> encounter_plane;
+  double plane_hbr_m = 0.0;    ///< hard-body radius with encounter_plane [m]
+  std::optional<Cdm> cdm;      ///< the message the states came from: its own figures reported
+  long mc_samples = 0;         ///< Monte Carlo samples (states only); 0: no Monte Carlo
+  std::uint64_t mc_seed = 1;   ///< Monte Carlo seed
+};
+
+/// From a scenario's `conjunction:` block and its assessment.* table; every key of sc must
+/// have been read (config::ConfigError names the first that was not, or a bad value).
+AssessRequest read_assess_request(const config::Scenario& sc);
+/// From a CDM's text (KVN or XML; CdmError for a malformed one), named cdm_name in the result;
+/// hbr_m <= 0: from AREA_PC of both objects (std::invalid_argument when absent). The
+/// assessment.* table and the Earth model come from sc (an empty scenario with overrides).
+AssessRequest read_assess_request_cdm(const config::Scenario& sc, const std::string& cdm_text,
+                                      const std::string& cdm_name, double hbr_m);
+/// The encounter plane given directly, named "encounter plane".
+AssessRequest encounter_plane_request(const PrincipalEncounter& plane, double hbr_m);
+
+/// The message's own relative figures, beside those recomputed from its states.
+struct CdmFigures {
+  std::string message_id;
+  std::string tca_utc;                                ///< TCA as the message writes it (UTC)
+  std::optional<double> miss_distance_m;              ///< none when the message has none
+  std::optional<double> relative_speed_mps;
+  std::optional<double> collision_probability;
+  std::optional<std::string> collision_probability_method;
+  std::vector<std::string> unit_notes;  ///< units read as the standard's equivalent spelling
+};
+
+/// What only an assessment from states has.
+struct StatesAtTca {
+  std::array<ObjectState, 2> at_tca;  ///< states and covariances used (after TCA shift, repair)
+  double tca_shift_s = 0.0;           ///< TCA minus the epoch of the given states [s]
+  std::string tca_method;             ///< how the states were brought to TCA
+  std::string covariance_propagation;
+  std::array<bool, 2> covariance_repaired = {false, false};  ///< by eigenvalue clipping
+  std::array<double, 2> covariance_min_eigenvalue_m2 = {0.0, 0.0};
+  EncounterPlane plane;  ///< miss and combined covariance in the encounter frame
+  ShortTermCheck short_term;
+};
+
+struct AssessResult {
+  std::string source;
+  double hbr_m = 0.0;
+  double miss_m = 0.0;                  ///< at TCA (states) or in the plane given [m]
+  std::optional<double> rel_speed_mps;  ///< at TCA; none for an encounter plane given directly
+  PrincipalEncounter principal;         ///< miss and sigmas along the plane's principal axes
+  // The Pc of each method. A further method (e.g. a 3-D Nc or another Monte Carlo) is one
+  // more field here, std::optional when computed on request or only from states, and one
+  // more key in to_json; nothing else changes.
+  double pc_2d = 0.0;
+  std::optional<double> pc_2d_abs_error;  ///< quadrature error estimate (reported from states)
+  double pc_chan = 0.0;
+  PcMaxResult pc_max;                     ///< Alfano's maximum and its covariance scale
+  std::optional<MonteCarloResult> pc_mc;  ///< with mc_samples > 0 (Wilson 95 % interval)
+  std::optional<StatesAtTca> states;      ///< from states only
+  std::optional<CdmFigures> cdm;          ///< from a CDM only
+};
+
+/// Throws std::invalid_argument for bad input (as assess does; Monte Carlo without states;
+/// no encounter given).
+AssessResult run_assess(const AssessRequest& req);
+
+/// The CLI's --json output: miss_m, rel_speed_mps, pc_2d, pc_chan, pc_max, pc_max_scale,
+/// encounter_plane, and from states pc_2d_abs_error, tca, covariance checks, short_term,
+/// pc_mc/mc with Monte Carlo, cdm and notes with a CDM.
+nlohmann::json to_json(const AssessResult& r);
+/// The text output: miss, HBR, every Pc, the short-term verdict, each covariance repair and
+/// each CDM unit note.
+std::string to_text(const AssessResult& r);
+/// What a user must not miss, one line each (the CLI prints them on stderr too): each
+/// covariance repaired before the Pc, and each CDM unit note ("note: ...").
+std::vector<std::string> assess_warnings(const AssessResult& r);
+
+}  // namespace evade::assessment

@@ -1,0 +1,231 @@
+// `evade assess` as a library call (include/evade/assessment/assess_command.hpp): the request
+// read from a scenario, a CDM or the encounter plane, the assessment (assess.hpp; the Pc
+// methods of Foster & Estes 1992, Chan 2008, Alfano 2005 and Alfano 2009), and the result's
+// JSON and text forms.
+#include "evade/assessment/assess_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "evade/assessment/conjunction_input.hpp"
+#include "evade/config/json_values.hpp"
+#include "evade/config/read_params.hpp"
+
+namespace evade::assessment {
+namespace {
+
+template <class T>
+nlohmann::json optional_json(const std::optional<T>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+// The message's own relative values, beside what is recomputed from its states.
+CdmFigures cdm_figures(const Cdm& c) {
+  auto num = [&](const char* k) {
+    const std::string v = cdm_value(c.relative, k);
+    return v.empty() ? std::optional<double>() : std::optional<double>(std::stod(v));
+  };
+  CdmFigures f;
+  f.message_id = cdm_value(c.header, "MESSAGE_ID");
+  f.tca_utc = cdm_value(c.relative, "TCA");
+  f.miss_distance_m = num("MISS_DISTANCE");
+  f.relative_speed_mps = num("RELATIVE_SPEED");
+  f.collision_probability = num("COLLISION_PROBABILITY");
+  const std::string method = cdm_value(c.relative, "COLLISION_PROBABILITY_METHOD");
+  if (!method.empty()) f.collision_probability_method = method;
+  f.unit_notes = cdm_unit_notes(c);
+  return f;
+}
+
+AssessResult run_plane(const AssessRequest& req) {
+  if (req.mc_samples > 0) throw std::invalid_argument("--mc needs states (--scenario or --cdm)");
+  const PrincipalEncounter& pe = *req.encounter_plane;
+  AssessResult r;
+  r.source = req.source;
+  r.hbr_m = req.plane_hbr_m;
+  r.pc_max = pc_max_alfano(pe, r.hbr_m);
+  r.pc_2d = pc_2d(pe, r.hbr_m).pc;
+  r.pc_chan = pc_chan(pe, r.hbr_m);
+  r.miss_m = std::hypot(pe.miss_x_m, pe.miss_y_m);
+  r.principal = pe;
+  return r;
+}
+
+AssessResult run_states(const AssessRequest& req) {
+  std::optional<MonteCarloOptions> mc;
+  if (req.mc_samples > 0) mc = MonteCarloOptions{req.mc_samples, req.mc_seed, 0.0, 1.96};
+  const Assessment a = assess(*req.conjunction, req.config, mc);
+  AssessResult r;
+  r.source = req.source;
+  r.hbr_m = req.conjunction->hbr_m;
+  r.miss_m = a.plane.miss_3d_m;
+  r.rel_speed_mps = a.plane.rel_speed_mps;
+  r.principal = a.principal;
+  r.pc_2d = a.pc_2d.pc;
+  r.pc_2d_abs_error = a.pc_2d.abs_error;
+  r.pc_chan = a.pc_chan;
+  r.pc_max = a.pc_max;
+  r.pc_mc = a.mc;
+  r.states = StatesAtTca{a.at_tca,  a.tca_shift_s, a.tca_method, a.covariance_propagation,
+                         a.npd,     a.min_eigenvalue, a.plane,   a.short_term};
+  if (req.cdm) r.cdm = cdm_figures(*req.cdm);
+  return r;
+}
+
+nlohmann::json plane_json(const AssessResult& r) {
+  nlohmann::json j;
+  if (r.states) {
+    j["miss_x_m"] = r.states->plane.miss_m(0);
+    j["miss_y_m"] = r.states->plane.miss_m(1);
+    j["cov_m2"] = config::matrix_json(r.states->plane.cov_m2);
+  }
+  const PrincipalEncounter& pe = r.principal;
+  j["principal"] = {{"miss_x_m", pe.miss_x_m}, {"miss_y_m", pe.miss_y_m},
+                    {"sigma_x_m", pe.sigma_x_m}, {"sigma_y_m", pe.sigma_y_m}};
+  return j;
+}
+
+void add_states_json(const StatesAtTca& s, nlohmann::json* j) {
+  (*j)["tca"] = {{"shift_s", s.tca_shift_s}, {"method", s.tca_method},
+                 {"covariance_propagation", s.covariance_propagation}};
+  (*j)["covariance_repaired"] = {s.covariance_repaired[0], s.covariance_repaired[1]};
+  (*j)["covariance_min_eigenvalue_m2"] = {s.covariance_min_eigenvalue_m2[0],
+                                          s.covariance_min_eigenvalue_m2[1]};
+  (*j)["short_term"] = {{"valid", s.short_term.valid},
+                        {"encounter_time_s", s.short_term.encounter_time_s},
+                        {"period_s", s.short_term.period_s},
+                        {"reason", s.short_term.reason}};
+}
+
+void add_monte_carlo_json(const MonteCarloResult& mc, nlohmann::json* j) {
+  (*j)["pc_mc"] = mc.pc;
+  (*j)["pc_mc_low"] = mc.pc_low;
+  (*j)["pc_mc_high"] = mc.pc_high;
+  (*j)["mc"] = {{"samples", mc.samples}, {"hits", mc.hits}, {"window_s", mc.window_s},
+                {"interval", "Wilson 95 %"}};
+}
+
+nlohmann::json cdm_json(const CdmFigures& c) {
+  return {{"message_id", c.message_id},
+          {"tca", c.tca_utc},
+          {"miss_distance_m", optional_json(c.miss_distance_m)},
+          {"relative_speed_mps", optional_json(c.relative_speed_mps)},
+          {"collision_probability", optional_json(c.collision_probability)},
+          {"collision_probability_method", optional_json(c.collision_probability_method)}};
+}
+
+// Object i's covariance repair: for the text output (text true) or as a warning.
+std::string repair_line(const StatesAtTca& s, int i, bool text) {
+  char b[200];
+  if (text) {
+    (void)std::snprintf(b, sizeof b,
+                        "  object %d covariance repaired (not positive definite, smallest "
+                        "eigenvalue %.6e, clipped)\n",
+                        i + 1, s.covariance_min_eigenvalue_m2[i]);
+  } else {
+    (void)std::snprintf(b, sizeof b,
+                        "object %d's covariance is not positive definite (smallest eigenvalue "
+                        "%.6e): repaired by eigenvalue clipping before the Pc",
+                        i + 1, s.covariance_min_eigenvalue_m2[i]);
+  }
+  return b;
+}
+
+}  // namespace
+
+AssessRequest read_assess_request(const config::Scenario& sc) {
+  AssessRequest r;
+  config::read_params(sc, "assessment.", assess_params(), &r.config);
+  r.conjunction = read_conjunction_scenario(sc);
+  sc.check_all_used();
+  r.source = "scenario " + sc.source();
+  return r;
+}
+
+AssessRequest read_assess_request_cdm(const config::Scenario& sc, const std::string& cdm_text,
+                                      const std::string& cdm_name, double hbr_m) {
+  AssessRequest r;
+  config::read_params(sc, "assessment.", assess_params(), &r.config);
+  r.cdm = read_cdm_text(cdm_text);
+  r.conjunction = conjunction_from_cdm(*r.cdm, hbr_m, config::read_earth(sc));
+  sc.check_all_used();
+  r.source = "cdm " + cdm_name;
+  return r;
+}
+
+AssessRequest encounter_plane_request(const PrincipalEncounter& plane, double hbr_m) {
+  AssessRequest r;
+  r.source = "encounter plane";
+  r.encounter_plane = plane;
+  r.plane_hbr_m = hbr_m;
+  return r;
+}
+
+AssessResult run_assess(const AssessRequest& req) {
+  if (req.encounter_plane) return run_plane(req);
+  if (!req.conjunction)
+    throw std::invalid_argument("assess: no encounter given (states or an encounter plane)");
+  return run_states(req);
+}
+
+nlohmann::json to_json(const AssessResult& r) {
+  nlohmann::json j = {{"source", r.source}, {"hbr_m", r.hbr_m}, {"miss_m", r.miss_m},
+                      {"rel_speed_mps", optional_json(r.rel_speed_mps)}, {"pc_2d", r.pc_2d},
+                      {"pc_chan", r.pc_chan}, {"pc_max", r.pc_max.pc_max},
+                      {"pc_max_scale", r.pc_max.scale}, {"encounter_plane", plane_json(r)}};
+  if (r.pc_2d_abs_error) j["pc_2d_abs_error"] = *r.pc_2d_abs_error;
+  if (r.states) add_states_json(*r.states, &j);
+  if (r.pc_mc) add_monte_carlo_json(*r.pc_mc, &j);
+  if (r.cdm) {
+    j["cdm"] = cdm_json(*r.cdm);
+    j["notes"] = r.cdm->unit_notes;
+  }
+  return j;
+}
+
+std::string to_text(const AssessResult& r) {
+  char b[256];
+  (void)std::snprintf(b, sizeof b, ": miss %.3f m, HBR %.3f m\n", r.miss_m, r.hbr_m);
+  std::string t = r.source + b;
+  if (r.states) {
+    (void)std::snprintf(b, sizeof b,
+                        "  at TCA (%+.6f s from the epoch of the given states): relative speed "
+                        "%.3f m/s\n",
+                        r.states->tca_shift_s, *r.rel_speed_mps);
+    t += b;
+  }
+  if (r.cdm) t += "  CDM " + r.cdm->message_id + ": TCA " + r.cdm->tca_utc + " UTC\n";
+  (void)std::snprintf(b, sizeof b, "  Pc 2D %.6e  Chan %.6e  max %.6e\n", r.pc_2d, r.pc_chan,
+                      r.pc_max.pc_max);
+  t += b;
+  if (r.pc_mc) {
+    (void)std::snprintf(b, sizeof b, "  Pc Monte Carlo %.6e  [%.6e, %.6e]\n", r.pc_mc->pc,
+                        r.pc_mc->pc_low, r.pc_mc->pc_high);
+    t += b;
+  }
+  if (!r.states) return t;
+  if (!r.states->short_term.valid)
+    t += "  short-term assumptions fail: " + r.states->short_term.reason + "\n";
+  for (int i = 0; i < 2; ++i) {
+    if (!r.states->covariance_repaired[i]) continue;
+    t += repair_line(*r.states, i, true);
+  }
+  if (r.cdm)
+    for (const std::string& n : r.cdm->unit_notes) t += "  note: " + n + "\n";
+  return t;
+}
+
+std::vector<std::string> assess_warnings(const AssessResult& r) {
+  std::vector<std::string> w;
+  if (!r.states) return w;
+  for (int i = 0; i < 2; ++i) {
+    if (!r.states->covariance_repaired[i]) continue;
+    w.push_back(repair_line(*r.states, i, false));
+  }
+  if (r.cdm)
+    for (const std::string& n : r.cdm->unit_notes) w.push_back("note: " + n);
+  return w;
+}
+
+}  // namespace evade::assessment

@@ -1,0 +1,89 @@
+// `evade plan cam` as a library call (assessment/plan_cam_command.hpp): run_plan_cam on the
+// shipped example (scenarios/cam-example.yaml, Pc 1.9e-3, burn 17000 s before TCA for
+// Pc <= 1e-4: verified), the same conjunction as a CDM (the burn's UTC is the CDM's TCA
+// 2026-11-24 12:00:00 UTC minus 17000 s = 07:16:40 UTC = 1795504600 s since the Unix epoch),
+// the JSON keys the CLI prints, the text with the burn's UTC and Δv frames, and the
+// lead-time trade space.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "evade/assessment/plan_cam_command.hpp"
+
+namespace evade::assessment {
+namespace {
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+PlanCamRequest example_request() {
+  PlanCamRequest req =
+      read_plan_cam_request(config::Scenario::load(EVADE_TEST_SCENARIO_DIR "/cam-example.yaml"));
+  req.cam.lead_s = 17000.0;
+  req.cam.pc_max = 1e-4;
+  return req;
+}
+
+TEST(PlanCamCommand, ShippedExampleIsVerified) {
+  const PlanCamResult r = run_plan_cam(example_request());
+  ASSERT_TRUE(r.plan);
+  EXPECT_NEAR(r.plan->before.pc, 1.9178e-3, 1e-6);
+  EXPECT_TRUE(r.plan->verified_ok);
+  EXPECT_LE(r.plan->verified.pc, 1e-4);
+  EXPECT_NEAR(r.plan->dv_mps, 0.0254, 1e-4);
+  EXPECT_FALSE(r.burn_utc_j2000_s);  // a scenario has no UTC
+  const nlohmann::json j = to_json(r);
+  for (const char* k : {"source", "maneuver_needed", "lead_s", "pc_target", "dv_mps", "dv_rtn_mps",
+                        "dv_eci_mps", "burn_from_epoch_s", "tca_from_epoch_s", "before", "predicted",
+                        "predicted_first_linearization", "verified", "verified_ok",
+                        "relinearizations", "last_change_mps", "search", "nlopt_result",
+                        "primary_at_burn", "frames"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_FALSE(j.contains("burn_utc"));
+  EXPECT_EQ(j["dv_rtn_mps"].size(), 3u);
+}
+
+TEST(PlanCamCommand, CdmGivesTheBurnUtc) {
+  PlanCamRequest req = read_plan_cam_request_cdm(
+      config::Scenario::empty("test"), file_text(EVADE_TEST_CDM_DIR "/cam-example.cdm"), "cam", 15.0);
+  req.cam.lead_s = 17000.0;
+  req.cam.pc_max = 1e-4;
+  const PlanCamResult r = run_plan_cam(req);
+  ASSERT_TRUE(r.burn_unix_utime_us);
+  EXPECT_EQ(*r.burn_unix_utime_us, 1795504600000000);
+  EXPECT_EQ(to_json(r)["burn_utc"], "2026-11-24 07:16:40.000000000");
+  const std::string t = to_text(r);
+  EXPECT_NE(t.find("2026-11-24 07:16:40.000000000 UTC"), std::string::npos) << t;
+  EXPECT_NE(t.find("dv RTN ["), std::string::npos) << t;
+  EXPECT_NE(t.find("dv ECI ["), std::string::npos) << t;
+  EXPECT_NE(t.find("m/s  (J2000 axes)"), std::string::npos) << t;
+}
+
+TEST(PlanCamCommand, SweepHasOneRowPerLead) {
+  PlanCamRequest req = example_request();
+  req.sweep = CamLeadSweep{3000.0, 9000.0, 2};
+  const PlanCamResult r = run_plan_cam(req);
+  EXPECT_FALSE(r.plan);
+  ASSERT_EQ(r.sweep.size(), 2u);
+  EXPECT_EQ(r.sweep[1].lead_s, 9000.0);
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j["rows"].size(), 2u);
+  for (const char* k : {"source", "pc_max", "min_miss_m", "along_track_only"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_EQ(to_text(r).rfind("lead_s,dv_mps,dv_r_mps", 0), 0u);
+  req.sweep = CamLeadSweep{0.0, 9000.0, 2};  // lead 0 is not a burn before TCA
+  EXPECT_THROW((void)run_plan_cam(req), std::invalid_argument);
+  req.sweep = CamLeadSweep{3000.0, 9000.0, 0};
+  EXPECT_THROW((void)run_plan_cam(req), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace evade::assessment
