@@ -19,10 +19,14 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "param_flag_option.hpp"
 #include "cmd_screen_catalog.hpp"
 #include "screen_cdm_out.hpp"
 #include "evade/conjunction/catalog.hpp"
+#include "evade/config/read_params.hpp"
+#include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/screen_command.hpp"
+#include "evade/conjunction/screen_scenario.hpp"
 #include "evade/distributed/distributed_screen.hpp"
 
 namespace evade::cli {
@@ -57,8 +61,7 @@ bool given(const Options& o, const std::string& flag) {
 // (exit 2), naming the flag and the mode.
 void refuse_inapplicable(const Options& o) {
   const bool catalog = !o.catalog.tle_path.empty() || !o.catalog.omm_path.empty();
-  const std::vector<const char*> catalog_only = {"--primary", "--span-s", "--threshold-m",
-                                                 "--step-s", "--start"};
+  const std::vector<const char*> catalog_only = {"--primary", "--start"};
   const std::vector<const char*> objects_only = {"--population", "--objects", "--seed",
                                                  "--trace", "--csv"};
   for (const char* f : catalog ? objects_only : catalog_only) {
@@ -68,8 +71,7 @@ void refuse_inapplicable(const Options& o) {
         (catalog ? "a catalog screen (--tle/--omm): it applies to a screen of scenario, "
                    "--objects or --population objects"
                  : "a screen of scenario, --objects or --population objects: it applies only "
-                   "with --tle/--omm (set the span and threshold with --set span_s=..., "
-                   "--set robust.threshold_m=...)"));
+                   "with --tle/--omm"));
   }
   if (catalog && o.method != "robust") {
     throw std::invalid_argument("--method: does not apply to a catalog screen (--tle/--omm) except "
@@ -122,7 +124,8 @@ ScreenObjectsRequest objects_request(const Options& o, const config::Scenario& s
 int run(const Options& o) {
   refuse_inapplicable(o);
   if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) return run_catalog(o);
-  const config::Scenario sc = load_scenario(o.common);
+  config::Scenario sc = load_scenario(o.common);
+  for (const std::string& kv : o.catalog.param_overrides) sc.apply_override(kv);  // flags win
   ScreenObjectsRequest req = objects_request(o, sc);
   req.validate();
   create_cdm_dir(req.cdm.dir);
@@ -140,6 +143,20 @@ int run(const Options& o) {
   if (o.common.json) print_json(to_json(r));
   else (void)std::fputs(to_text(r).c_str(), stdout);
   return 0;
+}
+
+// The parameter flags (evade/config/param_flags.hpp), in both modes: a catalog screen's span,
+// threshold and grid step (defaults 86400 s, 5000 m, automatic), else overrides of the
+// scenario's keys.
+void add_parameter_flags(CLI::App& app, CatalogScreenOptions& c) {
+  const auto add = [&](const auto& table, const char* prefix, const char* key) {
+    const ParamSpec* spec = config::find_param_spec(table, prefix, key);
+    if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
+    (void)add_param_flag(app, key, *spec, &c.param_overrides);  // registered on app
+  };
+  add(screen_scenario_params(), "", "span_s");
+  add(screen_options_params(), "robust.", "robust.threshold_m");
+  add(screen_options_params(), "robust.", "robust.step_s");
 }
 
 Runner setup(CLI::App& app) {
@@ -162,10 +179,7 @@ Runner setup(CLI::App& app) {
   auto* omm = app.add_option("--omm", c.omm_path, "CCSDS OMM (KVN or XML) or GP JSON/CSV file, as --tle");
   tle->excludes(omm);
   app.add_option("--primary", c.primary_norad, "with --tle/--omm: screen this NORAD id against the catalog [-]");
-  app.add_option("--span-s", c.span_s, "with --tle/--omm: span from the start [s]")->capture_default_str();
-  app.add_option("--threshold-m", c.threshold_m, "with --tle/--omm: report misses <= D [m]")
-      ->capture_default_str();
-  app.add_option("--step-s", c.step_s, "with --tle/--omm: grid step [s] (0 = automatic)");
+  add_parameter_flags(app, c);
   app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
   add_cdm_out_options(app, c.cdm);
   for (const char* f : {"--primary", "--span-s", "--threshold-m", "--step-s", "--start",

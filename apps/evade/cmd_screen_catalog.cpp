@@ -14,9 +14,7 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   conjunction::ScreenCatalogRequest req;
   req.source = o.tle_path.empty() ? o.omm_path : o.tle_path;
   req.primary_norad = o.primary_norad;
-  req.span_s = o.span_s;
-  req.threshold_m = o.threshold_m;
-  req.step_s = o.step_s;
+  conjunction::apply_param_overrides(o.param_overrides, &req);
   req.start_utc = o.start_utc;
   req.threads = o.threads;
   req.cdm = screen_cdm_options(o.cdm);

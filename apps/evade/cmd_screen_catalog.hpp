@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "screen_cdm_out.hpp"
 
@@ -13,9 +14,8 @@ struct CatalogScreenOptions {
   std::string tle_path;      ///< --tle: TLE or 3LE text
   std::string omm_path;      ///< --omm: OMM KVN/XML or GP JSON/CSV (detected from the text)
   long primary_norad = -1;   ///< --primary: screen this object against the catalog
-  double span_s = 86400.0;   ///< --span-s
-  double threshold_m = 5000.0;  ///< --threshold-m
-  double step_s = 0.0;       ///< --step-s (0: auto_step_s(N))
+  /// --span-s, --threshold-m, --step-s as "key=value" (evade/config/param_flags.hpp)
+  std::vector<std::string> param_overrides;
   std::string start_utc;     ///< --start (empty: the latest element epoch)
   int threads = 0;           ///< 0: hardware concurrency
   bool json = false;

@@ -25,6 +25,9 @@ constexpr ParamFlagRow kRows[] = {
     {"evasion.dv_mps", "--dv-mps", "--dv"},
     {"transfer.dt_s", "--dt-transfer-s", "--dt-transfer"},
     {"transfer.impulses", "--impulses", ""},
+    {"span_s", "--span-s", ""},
+    {"robust.threshold_m", "--threshold-m", ""},
+    {"robust.step_s", "--step-s", ""},
 };
 
 constexpr RetiredFlag kSimRetired[] = {

@@ -7,8 +7,13 @@
 #include <cstdio>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "evade/conjunction/screen_command.hpp"
+
+#include "evade/config/read_params.hpp"
+#include "evade/conjunction/robust_screen.hpp"
+#include "evade/conjunction/screen_scenario.hpp"
 #include "evade/conjunction/screening_events.hpp"
 #include "evade/conjunction/sgp4_motion.hpp"
 #include "evade/core/epoch.hpp"
@@ -108,6 +113,25 @@ void ScreenCatalogRequest::validate() const {
     throw std::invalid_argument("--step-s = " + std::to_string(step_s) +
                                 " is invalid: expected 0 (automatic) or a number in [1, 600] s");
   assessment::check_screen_cdm_options(cdm, false);  // catalog objects carry no radii
+}
+
+void apply_param_overrides(const std::vector<std::string>& key_values, ScreenCatalogRequest* req) {
+  if (key_values.empty()) return;
+  config::Scenario sc = config::Scenario::empty("command-line flags");
+  for (const std::string& kv : key_values) sc.apply_override(kv);
+  const auto spec = [](const ParamSpec* p, const char* key) -> const ParamSpec& {
+    if (p == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
+    return *p;
+  };
+  req->span_s = sc.get_param(
+      "span_s", spec(config::find_param_spec(screen_scenario_params(), "", "span_s"), "span_s"),
+      req->span_s);
+  for (const auto& [key, field] : {std::pair<const char*, double*>{"robust.threshold_m", &req->threshold_m},
+                                   std::pair<const char*, double*>{"robust.step_s", &req->step_s}}) {
+    *field = sc.get_param(key, spec(config::find_param_spec(screen_options_params(), "robust.", key), key),
+                          *field);
+  }
+  sc.check_all_used();
 }
 
 ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
