@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "evade/config/json_values.hpp"
 #include "number_list.hpp"
 #include "plan_output.hpp"
 #include "evade/assessment/cam_burn_plan.hpp"
@@ -62,7 +63,7 @@ int output(const Options& o, const PlanCamResult& r, nlohmann::json* j) {
                                 "give --epoch-utime, the utime of the burn [us]");
   if (out.epoch_utime_us == 0 && r.burn_unix_utime_us) out.epoch_utime_us = *r.burn_unix_utime_us;
   const BurnPlan bp = make_cam_burn_plan(*r.plan, plan_id(out));
-  (*j)["plan"] = impulses_json(bp);
+  (*j)["plan"] = config::impulses_json(bp);
   return output_plan(out, bp, j);
 }
 

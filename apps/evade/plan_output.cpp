@@ -50,7 +50,7 @@ nlohmann::json published_json(const PlanOutputOptions& o, const BurnPlan& plan,
           {"epoch_utime", o.epoch_utime_us != 0 ? o.epoch_utime_us : utime},
           {"frame", o.frame},
           {"n_impulses", plan.n_impulses},
-          {"impulses", impulses_json(plan)}};
+          {"impulses", config::impulses_json(plan)}};
 }
 
 int uplink_signed(const PlanOutputOptions& o, const BurnPlan& plan,
@@ -59,25 +59,13 @@ int uplink_signed(const PlanOutputOptions& o, const BurnPlan& plan,
   const lcm_link::UplinkOptions u = uplink_options(o.sign, o.lcm_url);
   const lcm_link::UplinkResult r = lcm_link::uplink_plan(u, o.channel, plan, o.seq, stamp, key);
   (*j)["published"] = published_json(o, plan, r.first_utime);
-  (*j)["uplink"] = uplink_json(r, key.id);
+  (*j)["uplink"] = lcm_link::to_json(r, key.id);
   (void)std::fprintf(stderr, "evade: plan %ld %s (%s) after %d transmission(s)\n", o.seq,
                      lcm_link::outcome_name(r.outcome), r.reason.c_str(), r.transmissions);
   return lcm_link::exit_code(r);
 }
 
 }  // namespace
-
-nlohmann::json impulses_json(const BurnPlan& plan) {
-  nlohmann::json a = nlohmann::json::array();
-  for (int i = 0; i < plan.n_impulses; ++i) {
-    const ImpulsiveBurn& b = plan.impulses[static_cast<std::size_t>(i)];
-    a.push_back({{"t_s", b.t_s},
-                 {"dv_rsw_mps", config::vec_json(b.dv_rsw_mps)},
-                 {"dv_eci_mps", b.dv_eci_valid ? config::vec_json(b.dv_eci_mps)
-                                               : nlohmann::json(nullptr)}});
-  }
-  return a;
-}
 
 int output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j) {
   const guidance::PlanFrame frame =

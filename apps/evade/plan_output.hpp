@@ -47,7 +47,5 @@ std::int64_t plan_id(const PlanOutputOptions& o);
 /// fails.
 int output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json* j);
 
-/// The impulses as JSON (t_s, dv_rsw_mps, dv_eci_mps or null).
-nlohmann::json impulses_json(const BurnPlan& plan);
 
 }  // namespace evade::cli

@@ -34,20 +34,9 @@ lcm_link::UplinkOptions uplink_options(const SigningFlags& f, const std::string&
   return u;
 }
 
-nlohmann::json uplink_json(const lcm_link::UplinkResult& r, std::int32_t key_id) {
-  return {{"outcome", lcm_link::outcome_name(r.outcome)},
-          {"code", r.code},
-          {"reason", r.reason},
-          {"key_id", key_id},
-          {"transmissions", r.transmissions},
-          {"ack_s", r.outcome == lcm_link::AckOutcome::kTimeout ? nlohmann::json(nullptr)
-                                                               : nlohmann::json(r.ack_s)},
-          {"exit_code", lcm_link::exit_code(r)}};
-}
-
 int report_uplink(const char* what, const lcm_link::UplinkResult& r, std::int32_t key_id, bool json) {
   if (json) {
-    nlohmann::json j = uplink_json(r, key_id);
+    nlohmann::json j = lcm_link::to_json(r, key_id);
     j["command"] = what;
     print_json(j);
   } else {

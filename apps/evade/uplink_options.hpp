@@ -33,8 +33,6 @@ void add_signing_flags(CLI::App& app, SigningFlags& f, const char* key_help, boo
 /// Adds --key (required) and the other signing flags, --lcm-url and --json.
 void add_uplink_flags(CLI::App& app, UplinkFlags& f);
 lcm_link::UplinkOptions uplink_options(const SigningFlags& f, const std::string& lcm_url);
-/// An uplink's outcome as JSON (outcome, code, reason, key_id, transmissions, ack_s, exit_code).
-nlohmann::json uplink_json(const lcm_link::UplinkResult& r, std::int32_t key_id);
 /// Prints the outcome (JSON or one line) and returns its exit code (0, 3 or 4).
 int report_uplink(const char* what, const lcm_link::UplinkResult& r, std::int32_t key_id, bool json);
 

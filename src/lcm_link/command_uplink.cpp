@@ -214,4 +214,15 @@ UplinkResult uplink_key_cmd(const UplinkOptions& o, std::int8_t op, std::int32_t
   return run_uplink(o, tx, ack);
 }
 
+nlohmann::json to_json(const UplinkResult& r, std::int32_t key_id) {
+  return {{"outcome", outcome_name(r.outcome)},
+          {"code", r.code},
+          {"reason", r.reason},
+          {"key_id", key_id},
+          {"transmissions", r.transmissions},
+          {"ack_s", r.outcome == AckOutcome::kTimeout ? nlohmann::json(nullptr)
+                                                      : nlohmann::json(r.ack_s)},
+          {"exit_code", exit_code(r)}};
+}
+
 }  // namespace evade::lcm_link

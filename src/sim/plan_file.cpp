@@ -152,13 +152,7 @@ std::string plan_file_json(const PlanFile& f) {
   j["plan_id"] = f.plan.plan_id;
   j["source"] = source_name(f.plan.source);
   j["frame"] = f.frame == guidance::PlanFrame::kEci ? "eci" : "rsw";
-  j["impulses"] = json::array();
-  for (int i = 0; i < f.plan.n_impulses && i < BurnPlan::kMaxImpulses; ++i) {
-    const ImpulsiveBurn& b = f.plan.impulses[static_cast<std::size_t>(i)];
-    j["impulses"].push_back({{"t_s", b.t_s},
-                             {"dv_rsw_mps", config::vec_json(b.dv_rsw_mps)},
-                             {"dv_eci_mps", b.dv_eci_valid ? config::vec_json(b.dv_eci_mps) : json()}});
-  }
+  j["impulses"] = config::impulses_json(f.plan);
   std::string text = j.dump(2) + "\n";
   (void)parse_plan_file(text, "(being written)");  // the reader's rules, field named
   return text;

@@ -5,6 +5,8 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "evade/core/burn_plan.hpp"
+
 namespace evade::config {
 
 /// [x, y, z] (or [v0, ..., vn-1]) of any Eigen column vector.
@@ -26,5 +28,9 @@ nlohmann::json matrix_json(const Eigen::MatrixBase<Derived>& m) {
   }
   return j;
 }
+
+/// The impulses of plan: [{"t_s", "dv_rsw_mps", "dv_eci_mps" (null when not set)}, ...],
+/// the form of the plan file and of every planner's JSON.
+nlohmann::json impulses_json(const BurnPlan& plan);
 
 }  // namespace evade::config

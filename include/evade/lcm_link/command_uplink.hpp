@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "evade/auth/keyring.hpp"
 #include "evade/core/burn_plan.hpp"
 #include "evade/guidance_lcm/signed_encode.hpp"
@@ -47,6 +49,11 @@ struct UplinkResult {
 /// CLI exit code of an outcome: 0 accepted, 3 rejected with a named reason, 4 timeout.
 int exit_code(const UplinkResult& r) noexcept;
 const char* outcome_name(AckOutcome o) noexcept;
+
+/// The JSON of an uplink's outcome (outcome, code, reason, key_id, transmissions, ack_s: null
+/// on a timeout, exit_code), as `evade arm`, `evade key` and `evade plan ... --publish --key`
+/// print it.
+nlohmann::json to_json(const UplinkResult& r, std::int32_t key_id);
 
 /// Uplinks plan as evade_burn_plan_t with id seq on channel, signed with key, until the node
 /// acknowledges plan id seq.
