@@ -529,30 +529,19 @@ std::uint64_t Scenario::get_seed(const std::string& key, std::uint64_t fallback)
   return static_cast<std::uint64_t>(v);
 }
 
-void Scenario::check_all_used() const {
-  std::vector<std::string> leaves;
-  collect_leaves(tree_, "", leaves);
-  std::vector<std::string> unknown;
-  for (const auto& leaf : leaves) {
-    if (leaf.empty()) continue;
-    // A leaf is known if it or one of its parents was read (a list read whole).
-    bool known = false;
-    for (const auto& u : used_keys_) {
-      if (leaf == u || (leaf.size() > u.size() && leaf.compare(0, u.size(), u) == 0 && leaf[u.size()] == '.')) {
-        known = true;
-        break;
-      }
-    }
-    if (!known) unknown.push_back(leaf);
-  }
-  if (unknown.empty()) return;
-  // For the first unknown key, list the allowed keys beside it (same parent), deeper levels
-  // folded as "name.…", so the message stays readable for large scenarios.
-  const std::string& first = unknown.front();
-  const auto dot = first.rfind('.');
-  const std::string parent = dot == std::string::npos ? "" : first.substr(0, dot + 1);
+namespace {
+
+// True when leaf is key or lies below it (a list read whole marks its elements used).
+bool covered_by(const std::string& leaf, const std::string& key) {
+  return leaf == key || (leaf.size() > key.size() && leaf.compare(0, key.size(), key) == 0 &&
+                         leaf[key.size()] == '.');
+}
+
+// The keys read below parent ("a.b."), deeper levels folded as "name.…", sorted.
+std::vector<std::string> used_siblings(const std::vector<std::string>& used,
+                                       const std::string& parent) {
   std::vector<std::string> siblings;
-  for (const auto& u : used_keys_) {
+  for (const auto& u : used) {
     if (u.compare(0, parent.size(), parent) != 0) continue;
     std::string rest = u.substr(parent.size());
     const auto d = rest.find('.');
@@ -560,6 +549,28 @@ void Scenario::check_all_used() const {
     if (std::find(siblings.begin(), siblings.end(), rest) == siblings.end()) siblings.push_back(rest);
   }
   std::sort(siblings.begin(), siblings.end());
+  return siblings;
+}
+
+}  // namespace
+
+void Scenario::check_all_used() const {
+  std::vector<std::string> leaves;
+  collect_leaves(tree_, "", leaves);
+  std::vector<std::string> unknown;
+  for (const auto& leaf : leaves) {
+    if (leaf.empty()) continue;
+    const bool known = std::any_of(used_keys_.begin(), used_keys_.end(),
+                                   [&](const std::string& u) { return covered_by(leaf, u); });
+    if (!known) unknown.push_back(leaf);
+  }
+  if (unknown.empty()) return;
+  // For the first unknown key, list the allowed keys beside it (same parent), so the message
+  // stays readable for large scenarios.
+  const std::string& first = unknown.front();
+  const auto dot = first.rfind('.');
+  const std::string parent = dot == std::string::npos ? "" : first.substr(0, dot + 1);
+  const std::vector<std::string> siblings = used_siblings(used_keys_, parent);
   throw ConfigError(source_ + ": unknown key" + (unknown.size() > 1 ? "s '" : " '") +
                     join(unknown, "', '") + "' (allowed " +
                     (parent.empty() ? std::string("top-level keys") : "keys under '" + parent.substr(0, parent.size() - 1) + "'") +

@@ -190,36 +190,50 @@ MeanElements parse_tle(const std::string& line1, const std::string& line2, const
   return m;
 }
 
+namespace {
+
+bool blank_or_comment(const std::string& line) { return trim(line).empty() || starts(line, "#"); }
+
+// The element set whose line 1 is lines[i] (its line 2 the next line that is not blank or a
+// comment) into cat, or its error as an issue. Returns the index of the line 2 it used (i
+// when there is none).
+std::size_t read_element_set(const std::vector<std::string>& lines, std::size_t i,
+                             const std::string& name, const std::string& source,
+                             const TleReadOptions& opt, Catalog& cat) {
+  const int no = static_cast<int>(i) + 1;
+  std::size_t j = i + 1;
+  while (j < lines.size() && blank_or_comment(lines[j])) ++j;
+  if (j >= lines.size() || !starts(lines[j], "2 ")) {
+    reject(cat, {source, j < lines.size() ? static_cast<int>(j) + 1 : no + 1, 1,
+                 "line 2 of the element set begun on line " + std::to_string(no) + " (starting '2 ')",
+                 j < lines.size() ? lines[j].substr(0, 20) : "end of file"});
+    return i;
+  }
+  try {
+    cat.objects.push_back(parse_tle(lines[i], lines[j], name, source, no, opt));
+    if (j != i + 1) cat.objects.back().source_line = no;
+  } catch (const ReadError& e) {
+    ReadIssue is = e.issue;
+    if (is.line == no + 1) is.line = static_cast<int>(j) + 1;
+    reject(cat, is);
+  }
+  return j;
+}
+
+}  // namespace
+
 Catalog read_tle(const std::string& text, const std::string& source, const TleReadOptions& opt) {
   Catalog cat;
   const std::vector<std::string> lines = split_lines(text);
   std::string name;
   int name_line = 0;
-  const auto skip = [&](std::size_t i) { return trim(lines[i]).empty() || starts(lines[i], "#"); };
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (skip(i)) continue;
+    if (blank_or_comment(lines[i])) continue;
     const std::string& l = lines[i];
     const int no = static_cast<int>(i) + 1;
     if (starts(l, "1 ")) {
-      std::size_t j = i + 1;
-      while (j < lines.size() && skip(j)) ++j;
-      if (j >= lines.size() || !starts(lines[j], "2 ")) {
-        reject(cat, {source, j < lines.size() ? static_cast<int>(j) + 1 : no + 1, 1,
-                     "line 2 of the element set begun on line " + std::to_string(no) + " (starting '2 ')",
-                     j < lines.size() ? lines[j].substr(0, 20) : "end of file"});
-        name.clear();
-        continue;
-      }
-      try {
-        cat.objects.push_back(parse_tle(l, lines[j], name, source, no, opt));
-        if (j != i + 1) cat.objects.back().source_line = no;
-      } catch (const ReadError& e) {
-        ReadIssue is = e.issue;
-        if (is.line == no + 1) is.line = static_cast<int>(j) + 1;
-        reject(cat, is);
-      }
+      i = read_element_set(lines, i, name, source, opt, cat);
       name.clear();
-      i = j;
     } else if (starts(l, "2 ")) {
       reject(cat, {source, no, 1, "line 1 of an element set (starting '1 ') before line 2", l.substr(0, 20)});
       name.clear();

@@ -41,6 +41,42 @@ struct EventRecord {
   int direction = 0;  ///< +1: g rises through zero as time increases, -1: g falls
 };
 
+namespace detail {
+
+/// One step choice of Brent's zero: interpolation (secant when a == c, else inverse
+/// quadratic) where it is acceptable, else bisection. Updates the step d and the step before
+/// it, e.
+inline void brent_step(double a, double b, double c, double ga, double gb, double gc, double m,
+                       double tol1, double* d, double* e) {
+  if (!(std::abs(*e) >= tol1 && std::abs(ga) > std::abs(gb))) {
+    *d = m;
+    *e = m;
+    return;
+  }
+  double p;
+  double q;
+  const double s = gb / ga;
+  if (a == c) {
+    p = 2.0 * m * s;
+    q = 1.0 - s;
+  } else {
+    const double qa = ga / gc;
+    const double r = gb / gc;
+    p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+    q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+  }
+  if (p > 0.0) q = -q; else p = -p;
+  if (2.0 * p < std::min(3.0 * m * q - std::abs(tol1 * q), std::abs(*e * q))) {
+    *e = *d;
+    *d = p / q;
+  } else {
+    *d = m;
+    *e = m;
+  }
+}
+
+}  // namespace detail
+
 /// Root of a scalar function on [a, b] with g(a) g(b) <= 0 (Brent's zero, 1973). Returns
 /// the end of the final bracket at which |g| is smaller. Bounded by max_iterations.
 template <class G>
@@ -72,32 +108,7 @@ double brent_root(const G& g, double a, double b, double ga, double gb, double t
     const double tol1 = 2.0 * kEps * std::abs(b) + 0.5 * tol;
     const double m = 0.5 * (c - b);
     if (std::abs(m) <= tol1 || gb == 0.0) return b;
-    if (std::abs(e) >= tol1 && std::abs(ga) > std::abs(gb)) {
-      // Interpolation: secant (a == c) or inverse quadratic.
-      double p;
-      double q;
-      const double s = gb / ga;
-      if (a == c) {
-        p = 2.0 * m * s;
-        q = 1.0 - s;
-      } else {
-        const double qa = ga / gc;
-        const double r = gb / gc;
-        p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
-        q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-      }
-      if (p > 0.0) q = -q; else p = -p;
-      if (2.0 * p < std::min(3.0 * m * q - std::abs(tol1 * q), std::abs(e * q))) {
-        e = d;
-        d = p / q;
-      } else {
-        d = m;
-        e = m;
-      }
-    } else {
-      d = m;
-      e = m;
-    }
+    detail::brent_step(a, b, c, ga, gb, gc, m, tol1, &d, &e);
     a = b;
     ga = gb;
     b += (std::abs(d) > tol1) ? d : (m > 0.0 ? tol1 : -tol1);
