@@ -83,4 +83,7 @@ sgp4::Catalog read_catalog_file(const std::string& tle_path, const std::string& 
 /// Prints a JSON document on stdout (pretty, 2-space indent) followed by a newline.
 void print_json(const nlohmann::json& j);
 
+/// A command's result on stdout: its JSON with --json, else its text.
+void print_result(bool json, const nlohmann::json& j, const std::string& text);
+
 }  // namespace evade::cli

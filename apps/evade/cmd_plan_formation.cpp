@@ -36,11 +36,7 @@ int run_command(const PlanFormationOptions& o) {
   nlohmann::json j = to_json(r);
   const int uplink_rc =
       plan_wanted(o.out) ? output_plan(o.out, make_burn_plan(r, plan_id(o.out)), &j) : 0;
-  if (o.common.json) {
-    print_json(j);
-  } else {
-    std::fputs(to_text(r).c_str(), stdout);
-  }
+  print_result(o.common.json, j, to_text(r));
   return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 

@@ -39,11 +39,7 @@ int run(const Options& o) {
       plan_wanted(o.out)
           ? output_plan(o.out, observability::make_burn_plan(r.plan, plan_id(o.out)), &j)
           : 0;
-  if (o.common.json) {
-    print_json(j);
-  } else {
-    (void)std::fputs(observability::to_text(r).c_str(), stdout);
-  }
+  print_result(o.common.json, j, observability::to_text(r));
   return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 

@@ -113,11 +113,7 @@ int run_command(const ThreatCmdOptions& o) {
   const int uplink_rc =
       plan_wanted(o.out) ? output_plan(o.out, make_burn_plan(r.study.evasion, plan_id(o.out)), &j) : 0;
   if (!o.plot.empty() && !write_plot(o.plot, j)) return 1;
-  if (o.common.json) {
-    print_json(j);
-  } else {
-    std::fputs(to_text(r).c_str(), stdout);
-  }
+  print_result(o.common.json, j, to_text(r));
   return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 

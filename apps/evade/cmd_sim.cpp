@@ -180,11 +180,7 @@ int run_plan(const SimOptions& o, const config::Scenario& sc) {
   req.after_s = o.plan_after_s;
   const sim::SimPlanResult r = sim::run_sim_plan(req);
   print_warnings(r.warnings);
-  if (o.common.json) {
-    cli::print_json(sim::to_json(r));
-  } else {
-    std::fputs(sim::to_text(r).c_str(), stdout);
-  }
+  cli::print_result(o.common.json, sim::to_json(r), sim::to_text(r));
   return r.all_delivered ? 0 : 1;
 }
 
@@ -207,11 +203,7 @@ int run_sim(const SimOptions& o) {
   if (!r.run.closest_approach_found) return 1;
   if (!r.reporting) return 0;  // MPI rank > 0: rank 0 prints
   if (!o.plot.empty() && !draw_plot(o)) return 1;
-  if (o.common.json) {
-    cli::print_json(sim::to_json(r));
-  } else {
-    std::fputs(sim::to_text(r).c_str(), stdout);
-  }
+  cli::print_result(o.common.json, sim::to_json(r), sim::to_text(r));
   return 0;
 }
 

@@ -264,6 +264,14 @@ sgp4::Catalog read_catalog_file(const std::string& tle_path, const std::string& 
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
 
+void print_result(bool json, const nlohmann::json& j, const std::string& text) {
+  if (json) {
+    print_json(j);
+  } else {
+    std::cout << text << std::flush;
+  }
+}
+
 }  // namespace evade::cli
 
 // Nothing escapes main: a runtime failure anywhere (a command, or building the command

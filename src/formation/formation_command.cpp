@@ -9,11 +9,11 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <string>
 
 #include "evade/core/constants.hpp"
+#include "evade/core/text_format.hpp"
 #include "evade/formation/burn_plan.hpp"
 
 namespace evade::formation {
@@ -117,40 +117,31 @@ void say(const FormationTextSink& sink, const char* line) {
   if (sink) sink(line);
 }
 
-__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
-  char buf[512];
-  va_list args;
-  va_start(args, fmt);
-  (void)std::vsnprintf(buf, sizeof buf, fmt, args);
-  va_end(args);
-  return buf;
-}
-
 // Table 1 (analytic limits; the numerical ones beside them when computed).
 std::string limits_text(const FormationResult& r) {
   const LimitsResult& lim = r.limits;
-  std::string t = format("  %-34s %12s %12s%s\n", "Table 1 constraint", "raise_max_m", "lower_max_m",
+  std::string t = format_text("  %-34s %12s %12s%s\n", "Table 1 constraint", "raise_max_m", "lower_max_m",
                          r.numerical ? "  numerical_raise_m numerical_lower_m" : "");
   for (std::size_t k = 0; k < lim.rows.size(); ++k) {
     const ConstraintLimit& row = lim.rows[k];
-    t += format("  %-34s %12.3f %12.3f", row.def.name.c_str(), row.raise_max_m, row.lower_max_m);
+    t += format_text("  %-34s %12.3f %12.3f", row.def.name.c_str(), row.raise_max_m, row.lower_max_m);
     if (r.numerical) {
-      t += format("  %17.3f %17.3f", r.numerical_limits[k].raise_max_m,
+      t += format_text("  %17.3f %17.3f", r.numerical_limits[k].raise_max_m,
                   r.numerical_limits[k].lower_max_m);
     }
     t += row.already_violated ? "  ALREADY VIOLATED\n" : "\n";
   }
-  return t + format("  %-34s %12.3f %12.3f\n", "overall", lim.raise_max_m, lim.lower_max_m);
+  return t + format_text("  %-34s %12.3f %12.3f\n", "overall", lim.raise_max_m, lim.lower_max_m);
 }
 
 std::string decision_text(const FormationResult& r) {
   const Decision& dec = r.decision;
-  std::string t = format("  decision: %s\n", dec.summary.c_str());
+  std::string t = format_text("  decision: %s\n", dec.summary.c_str());
   for (const AppliedBurn& b : dec.burns) {
-    t += format("    burn t = %.0f s after the epoch: delta_a %+.3f m, dv %+.5f m/s (tangential)\n",
+    t += format_text("    burn t = %.0f s after the epoch: delta_a %+.3f m, dv %+.5f m/s (tangential)\n",
                 b.t_s, b.delta_a_m, b.dv_mps);
   }
-  return t + format("  conjunction: TCA t = %.0f s after the epoch; miss without maneuver %.1f m, "
+  return t + format_text("  conjunction: TCA t = %.0f s after the epoch; miss without maneuver %.1f m, "
                     "predicted %.1f m, required %.1f m\n",
                     r.inputs.conjunction.tca_s, dec.nominal_miss_m, dec.predicted_miss_m,
                     r.inputs.conjunction.required_miss_m);
@@ -160,13 +151,13 @@ std::string decision_text(const FormationResult& r) {
 // inter-group RAAN and phase, metres for the box constraints.
 std::string verification_text(const FormationResult& r) {
   const Verification& ver = r.verification;
-  std::string t = format("  verification (two-body + J2): miss at TCA %.1f m (%s); constraints %s\n",
+  std::string t = format_text("  verification (two-body + J2): miss at TCA %.1f m (%s); constraints %s\n",
                          ver.miss_at_tca_m, ver.clears ? "clears" : "DOES NOT CLEAR",
                          ver.all_kept ? "all kept" : "SOME VIOLATED");
   for (std::size_t k = 0; k < ver.rows.size(); ++k) {
     const ConstraintCheck& c = ver.rows[k];
     const bool ang = k < r.limits.rows.size() && is_angle(r.limits.rows[k].def.kind);
-    t += format("    %-34s min margin %12.6g %-3s at t = %.0f s%s\n", c.name.c_str(), c.min_margin,
+    t += format_text("    %-34s min margin %12.6g %-3s at t = %.0f s%s\n", c.name.c_str(), c.min_margin,
                 ang ? "rad" : "m", c.t_min_margin_s, c.kept ? "" : "  VIOLATED");
   }
   return t;
@@ -234,10 +225,10 @@ nlohmann::json to_json(const FormationResult& r) {
 
 std::string to_text(const FormationResult& r) {
   const LimitsResult& lim = r.limits;
-  std::string t = format("evade plan formation (paper 003): threatened %s, T = %.2f days\n",
+  std::string t = format_text("evade plan formation (paper 003): threatened %s, T = %.2f days\n",
                          r.inputs.spec.sat_name(r.inputs.threatened).c_str(),
                          r.inputs.spec.horizon_days);
-  t += format("  K_Omega = %.5e rad/(m day) (paper 2.0953e-8), K_phi = %.5e rad/(m day), "
+  t += format_text("  K_Omega = %.5e rad/(m day) (paper 2.0953e-8), K_phi = %.5e rad/(m day), "
               "K_am = %.3f m/(m day)\n",
               lim.k.k_omega_rad_per_m_day, lim.k.k_phi_rad_per_m_day, lim.k.k_am_m_per_m_day);
   return t + limits_text(r) + decision_text(r) + verification_text(r);

@@ -4,40 +4,32 @@
 // VVLH and in RSW), the threat arc and its intervals (seconds after t0, the scenario's
 // t = 0), the search certificate, the eliminating burn (sec. 4.2) and the sweep rows
 // (Fig. 8, Fig. 4) when asked for.
-#include <cstdarg>
 #include <cstdio>
 #include <string>
 
 #include "evade/threat/threat_area_command.hpp"
 
+#include "evade/core/text_format.hpp"
+
 namespace evade::threat {
 namespace {
 
-__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
-  char buf[512];
-  va_list args;
-  va_start(args, fmt);
-  (void)std::vsnprintf(buf, sizeof buf, fmt, args);
-  va_end(args);
-  return buf;
-}
-
 std::string vec_text(const Vec3& v) {
-  return format("[%+.4f, %+.4f, %+.4f] m/s", v.x(), v.y(), v.z());
+  return format_text("[%+.4f, %+.4f, %+.4f] m/s", v.x(), v.y(), v.z());
 }
 
 std::string intervals_text(const ThreatArea& a) {
   if (a.intervals.empty()) return "none";
   std::string s;
   for (const ThreatInterval& iv : a.intervals) {
-    s += format("%s[%.2f, %.2f]", s.empty() ? "" : ", ", iv.start_s, iv.end_s);
+    s += format_text("%s[%.2f, %.2f]", s.empty() ? "" : ", ", iv.start_s, iv.end_s);
   }
   return s;
 }
 
 // The burn of one search: direction and Δv, both at t0.
 std::string burn_text(const char* label, const EvasionResult& r) {
-  return format("  %s at t0: alpha (pitch) %.4f rad, theta (yaw) %.4f rad in VVLH;\n"
+  return format_text("  %s at t0: alpha (pitch) %.4f rad, theta (yaw) %.4f rad in VVLH;\n"
                 "    dv_vvlh %s, dv_rsw %s\n",
                 label, r.alpha_rad, r.theta_rad, vec_text(r.dv_vvlh_mps).c_str(),
                 vec_text(r.dv_rsw_mps).c_str());
@@ -45,7 +37,7 @@ std::string burn_text(const char* label, const EvasionResult& r) {
 
 std::string certificate_text(const SearchCertificate& c) {
   if (c.grid_evaluations <= 0 || c.bound_cells <= 0) return "";
-  return format("  search: sweep %ld + BOBYQA %ld evaluations; no direction's arc is below "
+  return format_text("  search: sweep %ld + BOBYQA %ld evaluations; no direction's arc is below "
                 "%.2f s (%ld cells bounded, %s)\n",
                 c.grid_evaluations, c.local_evaluations, c.lower_bound_arc_s, c.bound_cells,
                 c.certified ? "certified" : "not certified within the tolerance");
@@ -54,7 +46,7 @@ std::string certificate_text(const SearchCertificate& c) {
 std::string elimination_text(const ThreatStudy& s) {
   if (!s.elimination) return "";
   const EliminationResult& e = *s.elimination;
-  return format("  eliminating V_E = %.3f m/s (%.1f%% of dv_max; t0 bound %.3f m/s; "
+  return format_text("  eliminating V_E = %.3f m/s (%.1f%% of dv_max; t0 bound %.3f m/s; "
                 "%.3f m/s still threatened)\n",
                 e.eliminating_dv_mps, 100.0 * s.eliminating_to_dv_max_ratio, s.t0_bound_mps,
                 e.threatened_dv_mps) +
@@ -66,7 +58,7 @@ std::string sweep_dv_text(const ThreatStudy& s) {
   if (!s.sweep_dv.empty()) t += "  sweep of V_E (Fig. 8; alpha, theta in VVLH):\n";
   for (const BurnSweepRow& row : s.sweep_dv) {
     const EvasionResult& q = row.evasion;
-    t += format("    V_E = %8.3f m/s: arc %9.2f s (%7.3f deg), alpha %.4f rad, theta %.4f rad\n",
+    t += format_text("    V_E = %8.3f m/s: arc %9.2f s (%7.3f deg), alpha %.4f rad, theta %.4f rad\n",
                 q.dv_mps, q.area.arc_s, q.area.arc_deg, q.alpha_rad, q.theta_rad);
   }
   return t;
@@ -76,11 +68,11 @@ std::string sweep_transfer_text(const ThreatStudy& s) {
   std::string t;
   if (!s.sweep_transfer.empty()) t += "  sweep of the transfer time (Fig. 4):\n";
   for (const TransferStudyRow& r : s.sweep_transfer) {
-    t += format("    dT = %7.1f s: J(t0) = %.3f m/s (2/3/4 impulses %.3f/%.3f/%.3f m/s), "
+    t += format_text("    dT = %7.1f s: J(t0) = %.3f m/s (2/3/4 impulses %.3f/%.3f/%.3f m/s), "
                 "t0 bound %.3f m/s",
                 r.dt_transfer_s, r.j_t0_mps, r.cost_t0_mps[0], r.cost_t0_mps[1],
                 r.cost_t0_mps[2], r.t0_bound_mps);
-    if (r.elimination) t += format(", eliminating V_E %.3f m/s", r.elimination->eliminating_dv_mps);
+    if (r.elimination) t += format_text(", eliminating V_E %.3f m/s", r.elimination->eliminating_dv_mps);
     t += "\n";
   }
   return t;
@@ -92,11 +84,11 @@ std::string to_text(const ThreatAreaResult& r) {
   const ThreatScenario& in = r.scenario;
   const ThreatStudy& s = r.study;
   const EvasionResult& e = s.evasion;
-  std::string t = format("threat area (paper 001): dT = %.1f s, %d impulses, dv_max = %.1f m/s\n",
+  std::string t = format_text("threat area (paper 001): dT = %.1f s, %d impulses, dv_max = %.1f m/s\n",
                          in.threat.transfer_s, in.threat.impulses, in.threat.dv_max_mps);
-  t += format("  chaser cost at t0 without evasion: %.3f m/s (dv_max - cost = %.3f m/s)\n",
+  t += format_text("  chaser cost at t0 without evasion: %.3f m/s (dv_max - cost = %.3f m/s)\n",
               s.chaser_cost_t0_mps, s.t0_bound_mps);
-  t += format("  V_E = %.3f m/s: arc %.2f s (%.3f deg), %ld evaluations, %.3f s wall\n",
+  t += format_text("  V_E = %.3f m/s: arc %.2f s (%.3f deg), %ld evaluations, %.3f s wall\n",
               e.dv_mps, e.area.arc_s, e.area.arc_deg, e.evaluations, s.runtime_s);
   t += burn_text("evasive burn", e);
   t += "  threat intervals (s after t0): " + intervals_text(e.area) + "\n";
