@@ -114,7 +114,8 @@ void add_box_rows(const FormationSpec& spec, std::size_t g, ConstraintKind kind,
     c.first = {g, dep};
     c.second = {g, Role::kChief};
     c.kind = kind;
-    c.name = prefix + role_name(dep) + gname;
+    c.name = prefix;
+    c.name.append(role_name(dep)).append(gname);
     c.nominal = nominal;
     c.lower = lower;
     c.upper = upper;

@@ -45,7 +45,10 @@ struct ImpulseFlown {
   Vec3 dv_delivered_eci_mps = Vec3::Zero();  ///< ∫ a dt in ECI [m/s]
 };
 
-struct SimPlanResult {
+// clang-tidy 14's bugprone-exception-escape reports this aggregate's implicit special
+// members without naming a throwing call; they only move or destroy std::string, std::vector
+// and nlohmann::json members, whose moves are noexcept.
+struct SimPlanResult {  // NOLINT(bugprone-exception-escape)
   std::string plan_file;
   std::int64_t plan_id = 0;
   guidance::PlanFrame frame = guidance::PlanFrame::kRsw;
