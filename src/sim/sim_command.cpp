@@ -169,8 +169,8 @@ nlohmann::json to_json(const SimCommandResult& r) {
 std::string to_text(const SimCommandResult& r) {
   char buf[400];
   (void)std::snprintf(buf, sizeof buf,
-                      "miss %.4f m at tca %.6f s (nominal miss %.4f m); dv %.4f m/s, burn %.3f "
-                      "s, %ld cycles\n",
+                      "miss %.4f m at TCA %.6f s after the run start (nominal miss %.4f m); dv "
+                      "%.4f m/s, burn %.3f s, %ld cycles\n",
                       r.run.miss_m, r.run.tca_s, r.run.nominal_miss_m, r.run.dv_mps,
                       r.run.burn_s, r.run.cycles);
   std::string text = buf;
