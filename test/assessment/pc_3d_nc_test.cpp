@@ -23,8 +23,9 @@ constexpr double kMu = 3.986004418e14;  // CARA's GM [m^3/s^2]
 
 // The requirement of the issue: every case within 2 % of CARA's 3D-Nc value. The CDMs round
 // positions to 1 mm and velocities to 1 um/s (CARA used its unrounded tables), which alone
-// can move the slow-encounter cases by a fraction of a percent; the largest deviation seen
-// is reported by the test output and in the commit message.
+// can move the slow-encounter cases by a fraction of a percent. Seen (GCC 12, default
+// rel_tol 1e-4): largest deviation -0.226 % (case 02, inside CARA's Monte Carlo 95 % interval),
+// all others within 0.05 %.
 constexpr double kRequiredRelTol = 0.02;
 
 struct AlfanoCase {
@@ -126,6 +127,130 @@ TEST(Pc3dNc, CaraSimilarTo2dLeo) {
   EXPECT_NEAR(r.pc, 1.0289973e-02, 1e-3 * 1.0289973e-02);  // CARA's own unit-test tolerance
   EXPECT_LT(r.coppola.tau0_s, 0.0);
   EXPECT_GT(r.coppola.tau1_s, 0.0);
+}
+
+
+// Bad input: std::invalid_argument naming what is wrong.
+void expect_invalid(const LeoCase& k, double hbr_m, const std::string& fragment) {
+  try {
+    (void)pc_3d_nc(k.s1, k.c1, k.s2, k.c2, hbr_m, kMu);
+    ADD_FAILURE() << "no exception for " << fragment;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(Pc3dNc, BadInputThrowsInvalidArgument) {
+  LeoCase k = similar_to_2d();
+  expect_invalid(k, 0.0, "hard-body radius must be finite and > 0 m");
+  expect_invalid(k, -5.0, "hard-body radius must be finite and > 0 m");
+  LeoCase nan_state = k;
+  nan_state.s2.v_eci_mps.y() = std::nan("");
+  expect_invalid(nan_state, 20.0, "object 2 state has a non-finite component");
+  LeoCase not_psd = k;
+  not_psd.c1(0, 1) = not_psd.c1(1, 0) = 2.0 * std::sqrt(k.c1(0, 0) * k.c1(1, 1));
+  expect_invalid(not_psd, 20.0, "object 1 covariance is not positive semi-definite");
+  LeoCase negative = k;
+  negative.c2(3, 3) = -1e-3;
+  expect_invalid(negative, 20.0, "object 2 covariance has a negative variance");
+  LeoCase asym = k;
+  asym.c2(0, 2) *= 1.5;
+  expect_invalid(asym, 20.0, "object 2 covariance is not symmetric");
+  LeoCase escape = k;
+  escape.s1.v_eci_mps *= 1.5;
+  expect_invalid(escape, 20.0, "object 1 orbit is unbound");
+}
+
+// The analytic dX/dE against central differences, and the element round trip.
+TEST(Pc3dNc, EquinoctialJacobianMatchesFiniteDifferences) {
+  const LeoCase k = similar_to_2d();
+  for (const StateEci& s : {k.s1, k.s2}) {
+    Vec6 e;
+    ASSERT_TRUE(cartesian_to_equinoctial(s.stacked(), kMu, &e));
+    const Vec6 x = equinoctial_to_cartesian(e, kMu);
+    EXPECT_LT((x - s.stacked()).head<3>().norm(), 1e-6);
+    EXPECT_LT((x - s.stacked()).tail<3>().norm(), 1e-9);
+    const Mat6 j = jacobian_epoch_elements_to_cartesian(e, 600.0, kMu, nullptr);
+    for (int c = 0; c < 6; ++c) {
+      const double h = 1e-7 * std::max(std::abs(e(c)), 1e-3);
+      Vec6 ep = e, em = e;
+      ep(c) += h;
+      em(c) -= h;
+      ep(5) += 600.0 * ep(0);  // lambda_M(600 s) = lambda_M0 + n 600 s
+      em(5) += 600.0 * em(0);
+      const Vec6 fd = (equinoctial_to_cartesian(ep, kMu) - equinoctial_to_cartesian(em, kMu)) / (2 * h);
+      EXPECT_LT((fd - j.col(c)).norm(), 1e-5 * std::max(1.0, j.col(c).norm())) << "column " << c;
+    }
+  }
+}
+
+// The sphere rule: exact for low-degree polynomials from the first level, and converging by
+// doubling on a narrow Gaussian cap exp(k (z - 1)), whose integral is 2 pi (1 - e^{-2k}) / k.
+TEST(Pc3dNc, SphereQuadratureConverges) {
+  const double pi = 3.14159265358979323846;
+  const SphereRule& r0 = sphere_rule(0);
+  double area = 0.0, z2 = 0.0;
+  for (std::size_t i = 0; i < r0.dir.size(); ++i) {
+    area += r0.weight[i];
+    z2 += r0.weight[i] * r0.dir[i].z() * r0.dir[i].z();
+  }
+  EXPECT_NEAR(area, 4.0 * pi, 1e-12);
+  EXPECT_NEAR(z2, 4.0 * pi / 3.0, 1e-12);
+  const double kappa = 400.0;  // angular width ~ 0.05 rad, as a 1 m sigma on a 20 m sphere
+  const Vec3 axis = Vec3(0.3, -0.5, 0.8).normalized();
+  const double exact = 2.0 * pi * (1.0 - std::exp(-2.0 * kappa)) / kappa;
+  double prev_err = 1.0;
+  for (int level = 0; level < kSphereLevels; ++level) {
+    const SphereRule& r = sphere_rule(level);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < r.dir.size(); ++i) {
+      sum += r.weight[i] * std::exp(kappa * (r.dir[i].dot(axis) - 1.0));
+    }
+    const double err = std::abs(sum / exact - 1.0);
+    std::printf("[ Nc ] sphere level %d (%zu points): relative error %.3g\n", level, r.dir.size(), err);
+    if (level >= 3) {
+      EXPECT_LT(err, 0.1 * prev_err + 1e-13);
+    }
+    prev_err = err;
+  }
+  EXPECT_LT(prev_err, 1e-10);
+}
+
+// Halving both tolerances (time integral and unit-sphere integral) moves the Pc by less than
+// the looser tolerance: the LEO case and a slow GEO case (Alfano 01, sphere 15 m vs 1 m sigma).
+TEST(Pc3dNc, TighterTolerancesChangePcLessThanTolerance) {
+  const LeoCase k = similar_to_2d();
+  Nc3dOptions loose, tight;
+  tight.rel_tol = 0.01 * loose.rel_tol;
+  tight.sphere_rel_tol = 0.01 * loose.sphere_rel_tol;
+  const Nc3dResult a = pc_3d_nc(k.s1, k.c1, k.s2, k.c2, 20.0, kMu, loose);
+  const Nc3dResult b = pc_3d_nc(k.s1, k.c1, k.s2, k.c2, 20.0, kMu, tight);
+  std::printf("[ Nc ] LEO: rel_tol %.0e -> %.9g (%d rates), %.0e -> %.9g (%d rates)\n",
+              loose.rel_tol, a.pc, a.rate_evaluations, tight.rel_tol, b.pc, b.rate_evaluations);
+  EXPECT_LT(std::abs(a.pc / b.pc - 1.0), loose.rel_tol);
+  EXPECT_GT(b.rate_evaluations, a.rate_evaluations);
+  const ConjunctionInput c = load_case(1, 15.0);
+  loose.window_s = tight.window_s = 21600.0;
+  const Nc3dResult ga = run(c, loose);
+  const Nc3dResult gb = run(c, tight);
+  std::printf("[ Nc ] Alfano 01: rel_tol %.0e -> %.9g (%d rates), %.0e -> %.9g (%d rates)\n",
+              loose.rel_tol, ga.pc, ga.rate_evaluations, tight.rel_tol, gb.pc, gb.rate_evaluations);
+  EXPECT_LT(std::abs(ga.pc / gb.pc - 1.0), 10.0 * loose.rel_tol);
+}
+
+// The default window and the small-HBR limit: for the LEO case the rate is concentrated
+// inside Coppola's bounds; the secondary's smallest position sigma is not >> 20 m, so the
+// small-HBR Nc is only of the same order (0.0077 against 0.0103).
+TEST(Pc3dNc, LeoDefaultWindowAndSmallHbrLimit) {
+  const LeoCase k = similar_to_2d();
+  const Nc3dResult r = pc_3d_nc(k.s1, k.c1, k.s2, k.c2, 20.0, kMu);
+  EXPECT_NEAR(r.t_begin_s, r.coppola.tau0_s, 1e-9);
+  EXPECT_NEAR(r.t_end_s, r.coppola.tau1_s, 1e-9);
+  EXPECT_GT(r.t_peak_s, r.t_begin_s);
+  EXPECT_LT(r.t_peak_s, r.t_end_s);
+  EXPECT_GT(r.pc_small_hbr, 0.5 * r.pc);
+  EXPECT_LT(r.pc_small_hbr, 1.5 * r.pc);
+  EXPECT_GT(r.period1_s, 5000.0);
 }
 
 }  // namespace

@@ -47,7 +47,10 @@ struct Nc3dResult {
 /// The 3D-Nc Pc of two objects with states and 6x6 ECI covariances [m^2, m^2/s, m^2/s^2]
 /// at (or near) TCA, combined hard-body radius hbr_m, gravitational parameter mu_m3ps2.
 /// Throws std::invalid_argument for non-finite input, hbr_m <= 0, a covariance that is not
-/// symmetric positive semi-definite within rounding, or an unbound (e >= 1) orbit.
+/// symmetric positive semi-definite (its correlation matrix's smallest eigenvalue below
+/// -1e-4; a slightly NPD one, like Alfano case 06's, is used as given, as CARA does), or an
+/// unbound (e >= 1) orbit. pc is NaN (converged false) if the equinoctial elements stay
+/// undefined after the retrograde reorientation.
 Nc3dResult pc_3d_nc(const StateEci& obj1, const Mat6& cov1_eci, const StateEci& obj2,
                     const Mat6& cov2_eci, double hbr_m, double mu_m3ps2,
                     const Nc3dOptions& opt = Nc3dOptions{});
