@@ -6,15 +6,19 @@
 // --seed S), the encounter plane used, how the states were brought to TCA and the short-term
 // validity verdict; with --cdm also the message's own TCA, MISS_DISTANCE, RELATIVE_SPEED and
 // COLLISION_PROBABILITY.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli.hpp"
 #include "number_list.hpp"
+#include "param_flag_option.hpp"
+#include "evade/config/read_params.hpp"
 #include "evade/assessment/assess_command.hpp"
 
 namespace evade::cli {
@@ -28,6 +32,7 @@ struct Options {
   double hbr_m = 0.0;
   long mc = 0;
   std::uint64_t seed = 1;
+  int threads = 0;  // 0: all cores
 };
 
 AssessRequest plane_request(const std::string& plane) {
@@ -50,9 +55,14 @@ int run(const Options& o) {
   const int sources = !o.common.scenario.empty() + !o.cdm.empty() + !o.plane.empty();
   if (sources != 1)
     throw std::invalid_argument("give exactly one of --scenario, --cdm, --encounter-plane");
+  if (!o.plane.empty() && !o.common.sets.empty()) {
+    throw std::invalid_argument("--set and --window-s do not apply to --encounter-plane (no "
+                                "states: the 2D Pc only)");
+  }
   AssessRequest req = o.plane.empty() ? states_request(o) : plane_request(o.plane);
   req.mc_samples = o.mc;
   req.mc_seed = o.seed;
+  req.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const AssessResult r = run_assess(req);
   // Every repair and every reading note on stderr as well as in the JSON and the text output:
   // a result computed from a repaired covariance must never look like one from the input.
@@ -72,12 +82,20 @@ Runner setup(CLI::App& app) {
   app.add_option("--hbr-m", o->hbr_m, "hard-body radius for --cdm [m]")->check(CLI::PositiveNumber);
   app.add_option("--mc", o->mc, "Monte Carlo samples [-]")->check(CLI::Range(1L, 100000000L));
   app.add_option("--seed", o->seed, "Monte Carlo seed [-]")->capture_default_str();
+  app.add_option("--threads", o->threads, "Monte Carlo worker threads [-] (default: all cores)")
+      ->check(CLI::Range(1, 256));
+  const ParamSpec* window = config::find_param_spec(assess_params(), "assessment.", "assessment.window_s");
+  if (window == nullptr) throw std::logic_error("no declaration of assessment.window_s");
+  (void)add_param_flag(app, "assessment.window_s", *window, &o->common.sets);
   app.add_flag("--json", o->common.json, "print a machine-readable JSON result on stdout");
   return [o]() { return run(*o); };
 }
 
 const bool kRegistered = register_command(
-    {{"assess"}, "Collision probability of one conjunction (2D, Chan, max, Monte Carlo)", &setup});
+    {{"assess"},
+     "Collision probability of one conjunction (2D, Chan, max, 3D-Nc, Monte Carlo; the "
+     "recommended Pc and its method)",
+     &setup});
 
 }  // namespace
 }  // namespace evade::cli

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
+
 #include "evade/assessment/covariance.hpp"
 #include "evade/assessment/covariance_propagation.hpp"
 #include "evade/dynamics/gravity.hpp"
@@ -114,6 +116,9 @@ Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
                 "held constant over the shift";
   for (int i = 0; i < 2; ++i) {
     a.at_tca[i] = in.obj[i];
+    const Mat3 p = in.obj[i].cov_eci.block<3, 3>(0, 0);
+    a.min_position_eigenvalue_m2[i] =
+        Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (p + p.transpose())).eigenvalues().minCoeff();
     if (in.obj[i].has_velocity_cov) {  // the whole 6x6 (a velocity-block NPD is an NPD too)
       bool npd = false;
       double min_ev = 0.0;

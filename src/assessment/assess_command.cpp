@@ -35,6 +35,7 @@ CdmFigures cdm_figures(const Cdm& c) {
   const std::string method = cdm_value(c.relative, "COLLISION_PROBABILITY_METHOD");
   if (!method.empty()) f.collision_probability_method = method;
   f.unit_notes = cdm_unit_notes(c);
+  for (const std::string& n : cdm_covariance_notes(c)) f.unit_notes.push_back(n);
   return f;
 }
 
@@ -49,12 +50,19 @@ AssessResult run_plane(const AssessRequest& req) {
   r.pc_chan = pc_chan(pe, r.hbr_m);
   r.miss_m = std::hypot(pe.miss_x_m, pe.miss_y_m);
   r.principal = pe;
+  r.pc = r.pc_2d;
   return r;
 }
 
 AssessResult run_states(const AssessRequest& req) {
   std::optional<MonteCarloOptions> mc;
-  if (req.mc_samples > 0) mc = MonteCarloOptions{req.mc_samples, req.mc_seed, 0.0, 1.96};
+  if (req.mc_samples > 0) {
+    mc = MonteCarloOptions{};
+    mc->samples = req.mc_samples;
+    mc->seed = req.mc_seed;
+    mc->window_s = req.config.window_s;
+    mc->threads = req.threads;
+  }
   const Assessment a = assess(*req.conjunction, req.config, mc);
   AssessResult r;
   r.source = req.source;
@@ -70,6 +78,11 @@ AssessResult run_states(const AssessRequest& req) {
   r.states = StatesAtTca{a.at_tca,  a.tca_shift_s, a.tca_method, a.covariance_propagation,
                          a.npd,     a.min_eigenvalue, a.plane,   a.short_term};
   if (req.cdm) r.cdm = cdm_figures(*req.cdm);
+  const bool six = req.conjunction->obj[0].has_velocity_cov && req.conjunction->obj[1].has_velocity_cov;
+  r.choice = choose_pc(a, r.hbr_m, req.config, req.conjunction->earth, six, req.threads);
+  r.pc = r.choice->pc;
+  r.method = r.choice->method;
+  if (!r.pc_mc && r.choice->mc) r.pc_mc = r.choice->mc;
   return r;
 }
 
@@ -103,7 +116,59 @@ void add_monte_carlo_json(const MonteCarloResult& mc, nlohmann::json* j) {
   (*j)["pc_mc_low"] = mc.pc_low;
   (*j)["pc_mc_high"] = mc.pc_high;
   (*j)["mc"] = {{"samples", mc.samples}, {"hits", mc.hits}, {"window_s", mc.window_s},
-                {"interval", "Wilson 95 %"}};
+                {"interval", "Wilson 95 %"}, {"stopped_at_target", mc.stopped_at_target},
+                {"motion", mc.j2 ? "two-body + J2" : "two-body"}};
+}
+
+nlohmann::json usage_json(const std::vector<UsageFlag>& flags) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const UsageFlag& f : flags) {
+    a.push_back({{"check", f.name}, {"value", f.value}, {"threshold", f.threshold},
+                 {"violated", f.violated}, {"meaning", f.meaning}});
+  }
+  return a;
+}
+
+void add_choice_json(const PcChoice& c, nlohmann::json* j) {
+  (*j)["method_reason"] = c.why;
+  (*j)["usage"] = {{"pc_2d", usage_json(c.usage_2d)}};
+  if (!c.nc3d) return;
+  const Nc3dResult& n = *c.nc3d;
+  (*j)["pc_3d_nc"] = n.pc;
+  (*j)["usage"]["pc_3d_nc"] = usage_json(c.usage_3d_nc);
+  (*j)["nc3d"] = {{"window_s", {n.t_begin_s, n.t_end_s}}, {"t_peak_s", n.t_peak_s},
+                  {"converged", n.converged}, {"failure", n.failure},
+                  {"rate_evaluations", n.rate_evaluations}, {"pc_small_hbr", n.pc_small_hbr}};
+  if (c.spans) {
+    (*j)["nc3d"]["segment_s"] = {c.spans->segment_begin_s, c.spans->segment_end_s};
+    (*j)["nc3d"]["conjunction_span_s"] = {c.spans->conj_begin_s, c.spans->conj_end_s};
+  }
+}
+
+// The recommended Pc and the checks behind it, for the text output.
+std::string choice_text(const AssessResult& r) {
+  char b[300];
+  std::string t;
+  (void)std::snprintf(b, sizeof b, "  Pc %.6e by %s (%s)\n", r.pc, r.method.c_str(),
+                      r.choice ? r.choice->why.c_str() : "encounter plane given: 2D only");
+  t += b;
+  if (!r.choice) return t;
+  auto flags = [&](const char* what, const std::vector<UsageFlag>& f) {
+    for (const UsageFlag& u : f) {
+      (void)std::snprintf(b, sizeof b, "    %s %-10s %.4g (limit %.4g)%s: %s\n", what,
+                          u.name.c_str(), u.value, u.threshold, u.violated ? " FAILS" : "",
+                          u.meaning.c_str());
+      t += b;
+    }
+  };
+  flags("2D   ", r.choice->usage_2d);
+  if (r.choice->nc3d) {
+    (void)std::snprintf(b, sizeof b, "  Pc 3D-Nc %.6e over [%.1f, %.1f] s about TCA\n",
+                        r.choice->nc3d->pc, r.choice->nc3d->t_begin_s, r.choice->nc3d->t_end_s);
+    t += b;
+    flags("3D-Nc", r.choice->usage_3d_nc);
+  }
+  return t;
 }
 
 nlohmann::json cdm_json(const CdmFigures& c) {
@@ -177,6 +242,9 @@ nlohmann::json to_json(const AssessResult& r) {
   if (r.pc_2d_abs_error) j["pc_2d_abs_error"] = *r.pc_2d_abs_error;
   if (r.states) add_states_json(*r.states, &j);
   if (r.pc_mc) add_monte_carlo_json(*r.pc_mc, &j);
+  j["pc"] = r.pc;
+  j["method"] = r.method;
+  if (r.choice) add_choice_json(*r.choice, &j);
   if (r.cdm) {
     j["cdm"] = cdm_json(*r.cdm);
     j["notes"] = r.cdm->unit_notes;
@@ -204,6 +272,7 @@ std::string to_text(const AssessResult& r) {
                         r.pc_mc->pc_low, r.pc_mc->pc_high);
     t += b;
   }
+  t += choice_text(r);
   if (!r.states) return t;
   if (!r.states->short_term.valid)
     t += "  short-term assumptions fail: " + r.states->short_term.reason + "\n";

@@ -15,6 +15,22 @@ const Param<AssessConfig> kRows[] = {
                      "Monte Carlo window half-width (k sigma_max + HBR) / v_rel, at most P/2"),
     EVADE_PARAM_REAL(AssessConfig, tca_search_s, "s", 0.0, 86400.0, false,
                      "largest shift from the given state epoch to the local TCA (0: use the states as given)"),
+    EVADE_PARAM_REAL(AssessConfig, window_s, "s", 0.0, 1e7, false,
+                     "3D-Nc and Monte Carlo window [-S, +S] about TCA (0: from the covariances)"),
+    EVADE_PARAM_REAL(AssessConfig, conj_duration_gamma, "-", 1e-300, 0.5, true,
+                     "probability left outside the conjunction-duration bounds (Coppola 2012)"),
+    EVADE_PARAM_REAL(AssessConfig, pc2d_extended_cutoff, "-", 0.0, 1.0, false,
+                     "2D usage check fails when conjunction duration / shorter period exceeds this"),
+    EVADE_PARAM_REAL(AssessConfig, pc2d_offset_cutoff, "-", 0.0, 1.0, false,
+                     "2D usage check fails when the farthest bound from TCA / shorter period exceeds this"),
+    EVADE_PARAM_REAL(AssessConfig, nc3d_extended_cutoff, "-", 0.0, 1.0, false,
+                     "3D-Nc check fails when conjunction span / encounter segment exceeds this"),
+    EVADE_PARAM_REAL(AssessConfig, nc3d_offset_cutoff, "-", 0.0, 1.0, false,
+                     "3D-Nc check fails when a conjunction bound / segment bound exceeds this"),
+    EVADE_PARAM_REAL(AssessConfig, mc_target_rel_accuracy, "-", 0.0, 1.0, true,
+                     "escalated Monte Carlo stops when the 95 % half-width is within this x Pc"),
+    EVADE_PARAM_INT(AssessConfig, mc_max_samples, "-", 10000, 1000000000,
+                    "escalated Monte Carlo: largest number of samples"),
 };
 
 }  // namespace

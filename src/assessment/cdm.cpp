@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <set>
+
+#include <Eigen/Eigenvalues>
 
 #include "evade/core/epoch.hpp"
 
@@ -458,6 +461,57 @@ Mat6 cdm_cov_rtn(const Cdm& c, int i) {
     }
   }
   return m;
+}
+
+std::vector<int> cdm_cov_rows(const Cdm& c, int i) {
+  std::vector<int> rows = {0, 1, 2, 3, 4, 5};
+  const std::vector<std::string>& keys = covariance_keyword_table();
+  for (int r = 6; r < 9; ++r) {  // CDRG, CSRP, CTHR: present when their diagonal term is
+    if (c.object[i].covariance.find(keys[r * (r + 1) / 2 + r]) != nullptr) rows.push_back(r);
+  }
+  return rows;
+}
+
+Eigen::MatrixXd cdm_cov_rtn_full(const Cdm& c, int i) {
+  const std::vector<int> rows = cdm_cov_rows(c, i);
+  const std::vector<std::string>& keys = covariance_keyword_table();
+  const int n = static_cast<int>(rows.size());
+  Eigen::MatrixXd m(n, n);
+  for (int a = 0; a < n; ++a) {
+    for (int b = 0; b <= a; ++b) {
+      const int r = rows[static_cast<std::size_t>(a)], k = rows[static_cast<std::size_t>(b)];
+      const std::string v = cdm_value(c.object[i].covariance, keys[r * (r + 1) / 2 + k]);
+      m(a, b) = m(b, a) = std::strtod(v.c_str(), nullptr);  // absent off-diagonal: 0
+    }
+  }
+  return m;
+}
+
+std::vector<std::string> cdm_covariance_notes(const Cdm& c) {
+  static const char* const kRowNames[9] = {"R", "T", "N", "RDOT", "TDOT", "NDOT", "DRG", "SRP",
+                                           "THR"};
+  std::vector<std::string> notes;
+  for (int i = 0; i < 2; ++i) {
+    const std::vector<int> rows = cdm_cov_rows(c, i);
+    if (rows.size() <= 6) continue;  // the 6x6 is checked (and repaired) by the assessment
+    const Eigen::MatrixXd m = cdm_cov_rtn_full(c, i);
+    // Scaled to unit diagonal, so rows of different units compare: the correlation matrix.
+    const Eigen::VectorXd d = m.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd corr = d.asDiagonal() * m * d.asDiagonal();
+    const double min_ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(corr).eigenvalues().minCoeff();
+    const double min_ev6 =  // an NPD 6x6 block is the assessment's repair, reported there
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(corr.topLeftCorner(6, 6)).eigenvalues().minCoeff();
+    if (min_ev > 0.0 || min_ev6 <= 0.0) continue;
+    std::string names;
+    for (const int r : rows) names += std::string(names.empty() ? "" : ",") + kRowNames[r];
+    char b[96];
+    (void)std::snprintf(b, sizeof b, "%.3e", min_ev);
+    notes.push_back("object " + std::to_string(i + 1) + "'s " + std::to_string(rows.size()) + "x" +
+                    std::to_string(rows.size()) + " covariance (" + names +
+                    ") is not positive definite (smallest eigenvalue of its correlation matrix " +
+                    b + "); the Pc uses the 6x6 position-velocity block, checked on its own");
+  }
+  return notes;
 }
 
 }  // namespace evade::assessment

@@ -1,6 +1,7 @@
 // A screening event as a CCSDS 508.0-B-1 CDM (include/evade/assessment/cdm_from_event.hpp
 // gives the keywords written and the sources: CCSDS 508.0-B-1 tables 3-2 to 3-6; the Pc is
-// Foster & Estes 1992 through pc_at_tca).
+// the recommended one of pc_method_choice.hpp: Foster & Estes 1992 unless its usage checks
+// fail).
 #include "evade/assessment/cdm_from_event.hpp"
 
 #include <cctype>
@@ -9,6 +10,7 @@
 #include <stdexcept>
 
 #include "evade/assessment/assess.hpp"
+#include "evade/assessment/pc_method_choice.hpp"
 #include "evade/assessment/covariance.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/core/epoch.hpp"
@@ -110,16 +112,28 @@ void relative(CdmSection& s, const ScreeningEvent& ev) {
   }
 }
 
-// The 2D Pc of the event from the RTN covariances rotated to EME2000.
-double event_pc(const ScreeningEvent& ev, const EventCdmOptions& opt) {
-  ObjectState o[2];
+// The recommended Pc of the event (pc_method_choice.hpp: 2D unless its usage checks fail)
+// from the RTN covariances rotated to EME2000, at the event's TCA.
+PcChoice event_pc(const ScreeningEvent& ev, const EventCdmOptions& opt) {
+  ConjunctionInput in;
+  in.hbr_m = opt.hbr_m;
   for (int i = 0; i < 2; ++i) {
-    o[i].name = ev.obj[i].name;
-    o[i].state = ev.obj[i].state_eme2000;
-    o[i].cov_eci = cov_eci_from_rtn(*ev.obj[i].cov_rtn, o[i].state);
-    o[i].has_velocity_cov = true;
+    in.obj[i].name = ev.obj[i].name;
+    in.obj[i].state = ev.obj[i].state_eme2000;
+    in.obj[i].cov_eci = cov_eci_from_rtn(*ev.obj[i].cov_rtn, in.obj[i].state);
+    in.obj[i].has_velocity_cov = true;
   }
-  return pc_at_tca(o[0], o[1], opt.hbr_m, opt.pc_rel_tol);
+  AssessConfig cfg = opt.assess;
+  cfg.tca_search_s = 0.0;  // the screener's TCA
+  const Assessment a = assess(in, cfg);
+  return choose_pc(a, in.hbr_m, cfg, in.earth, true, 1);
+}
+
+// The CCSDS name of a method (SANA's Pc-method codes where one exists).
+const char* pc_method_code(const std::string& method) {
+  if (method == "3d_nc") return "HALL-2021";
+  if (method == "mc") return "ALFANO-2009";
+  return "FOSTER-1992";
 }
 
 void check_event(const ScreeningEvent& ev, const EventCdmOptions& opt, bool cov_known) {
@@ -175,16 +189,20 @@ EventCdm cdm_from_event(const ScreeningEvent& ev, const EventCdmOptions& opt) {
   add(c.header, "CREATION_DATE", cdm_epoch(opt.creation_utc_j2000_s));
   add(c.header, "ORIGINATOR", opt.originator);
   add(c.header, "MESSAGE_ID", opt.message_id.empty() ? cdm_event_file_stem(ev) : opt.message_id);
+  std::optional<PcChoice> pc;
   if (cov_known) {
+    pc = event_pc(ev, opt);
     add_comment(c.relative, "hard-body radius for COLLISION_PROBABILITY: " +
                                 fmt("%.6f", opt.hbr_m) + " m" +
                                 (opt.hbr_source.empty() ? "" : " (" + opt.hbr_source + ")"));
+    add_comment(c.relative, "COLLISION_PROBABILITY by " + pc->method + " (" + pc->why + ")");
   }
   relative(c.relative, ev);
-  if (cov_known) {
-    out.pc = event_pc(ev, opt);
+  if (pc) {
+    out.pc = pc->pc;
+    out.pc_method = pc->method;
     add(c.relative, "COLLISION_PROBABILITY", fmt("%.10e", *out.pc));
-    add(c.relative, "COLLISION_PROBABILITY_METHOD", "FOSTER-1992");
+    add(c.relative, "COLLISION_PROBABILITY_METHOD", pc_method_code(pc->method));
   }
   for (int i = 0; i < 2; ++i) {
     const EventObject& o = ev.obj[i];

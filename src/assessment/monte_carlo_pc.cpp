@@ -87,7 +87,7 @@ double refine_minimum(const PairMotion& m, double t0, const Pair& p0, double lo,
   return best;
 }
 
-// Whether the closest distance over [-w, w] is below hbr (see the header for the search).
+// Whether the pair enters the hard-body sphere during [-w, w] (see the header: an ingress).
 bool is_hit(const PairMotion& m, double w, double period_s, double hbr_m,
             std::vector<double>* t, std::vector<Pair>* g) {
   const int n = std::max(2, static_cast<int>(std::ceil(2.0 * w / std::min(period_s / 64.0, w / 16.0))));
@@ -97,10 +97,12 @@ bool is_hit(const PairMotion& m, double w, double period_s, double hbr_m,
   m.grid(*t, g);
   std::vector<double> d(g->size());
   for (std::size_t i = 0; i < g->size(); ++i) d[i] = distance((*g)[i]);
+  bool outside = false;  // seen outside the sphere at or after the window's start
   for (std::size_t i = 0; i < d.size(); ++i) {
-    if (d[i] < hbr_m) return true;
+    if (d[i] >= hbr_m) outside = true;
+    else if (outside) return true;  // entered between the previous grid point and this one
     const bool left = i == 0 || d[i] <= d[i - 1], right = i + 1 == d.size() || d[i] <= d[i + 1];
-    if (!left || !right) continue;
+    if (!outside || !left || !right) continue;
     const Pair& p = (*g)[i];
     const double rmin = std::min(p.a.r_eci_m.norm(), p.b.r_eci_m.norm());
     const double amax = 2.0 * m.mu() / (rmin * rmin);

@@ -338,6 +338,34 @@ void TimeIntegral::refine() {
 
 namespace {
 
+// The span holding all but kSpanTail of Nc on each side: the cumulative Nc over the panels
+// in time order, linear inside a panel (CARA's TaConj, TbConj, comparable to Coppola's
+// duration at gamma = 1e-6: 5e-7 on each side).
+constexpr double kSpanTail = 5e-7;
+
+void conjunction_span(std::vector<Panel> panels, double nc, double* ta, double* tb) {
+  std::sort(panels.begin(), panels.end(), [](const Panel& x, const Panel& y) { return x.a < y.a; });
+  *ta = panels.empty() ? 0.0 : panels.front().a;
+  *tb = panels.empty() ? 0.0 : panels.back().b;
+  double cum = 0.0;
+  bool found_a = false;
+  for (const Panel& p : panels) {
+    const double next = cum + std::max(0.0, p.nc);
+    auto at = [&](double level) {
+      return p.a + (p.b - p.a) * (next > cum ? (level - cum) / (next - cum) : 0.0);
+    };
+    if (!found_a && next >= kSpanTail * nc) {
+      *ta = at(kSpanTail * nc);
+      found_a = true;
+    }
+    if (next >= (1.0 - kSpanTail) * nc) {
+      *tb = at((1.0 - kSpanTail) * nc);
+      return;
+    }
+    cum = next;
+  }
+}
+
 // Initial panels: Coppola's window (where a near-linear encounter's rate lives) in 4 panels,
 // the rest of [a, b] in panels no wider than max(Coppola's width, (b - a) / 32).
 void initial_panels(TimeIntegral* ti, double a, double b, const EncounterWindow& w) {
@@ -432,6 +460,7 @@ Nc3dResult pc_3d_nc(const StateEci& obj1, const Mat6& cov1_eci, const StateEci& 
   res.t_begin_s = win.a;
   res.t_end_s = win.b;
   res.t_peak_s = ti.t_peak_;
+  conjunction_span(ti.panels_, nc, &res.conj_begin_s, &res.conj_end_s);
   res.rate_peak_per_s = ti.peak_;
   res.rate_evaluations = ti.evaluations_;
   res.failure = convergence_failure(ti, opt, nc);

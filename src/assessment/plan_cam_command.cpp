@@ -133,6 +133,13 @@ std::string plan_text(const PlanCamResult& r) {
   (void)std::snprintf(b, sizeof b, "\n  before:    Pc %.6e  miss %.3f m\n", p.before.pc,
                       p.before.miss_m);
   t += b;
+  (void)std::snprintf(b, sizeof b, "  recommended Pc before: %.6e by %s (%s)\n",
+                      r.pc_before_recommended, r.pc_method_before.c_str(),
+                      r.pc_method_reason.c_str());
+  t += b;
+  if (r.pc_method_before != "2d")
+    t += "  note: the planner's Pc figures are 2D Pc, which the usage checks reject for this "
+         "encounter; verify the burn with `evade assess` on the post-burn states\n";
   if (!p.maneuver_needed) return t + "  no manoeuvre needed\n";
   return t + burn_text(p);
 }
@@ -166,6 +173,15 @@ PlanCamResult run_plan_cam(const PlanCamRequest& req) {
   r.source = req.source;
   r.request = req.cam;
   r.epoch_utc_j2000_s = req.epoch_utc_j2000_s;
+  {
+    const ConjunctionInput& in = req.conjunction;
+    const PcChoice c = choose_pc(assess(in, req.assess_config), in.hbr_m, req.assess_config,
+                                 in.earth, in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov,
+                                 1);
+    r.pc_before_recommended = c.pc;
+    r.pc_method_before = c.method;
+    r.pc_method_reason = c.why;
+  }
   if (req.sweep) {
     r.sweep = sweep_cam_lead(req.conjunction, sweep_leads(*req.sweep, req.cam, req.cam_config),
                              req.cam, req.assess_config, req.cam_config);
@@ -181,6 +197,8 @@ nlohmann::json to_json(const PlanCamResult& r) {
   if (!r.plan) return sweep_json(r);
   nlohmann::json j = plan_json(*r.plan, r.epoch_utc_j2000_s);
   j["source"] = r.source;
+  j["pc_before_recommended"] = {{"pc", r.pc_before_recommended}, {"method", r.pc_method_before},
+                                {"reason", r.pc_method_reason}};
   return j;
 }
 

@@ -61,6 +61,7 @@ ScreenCdmFile one_message(const ScreenCdmOptions& o, const ScreeningEvent& ev, b
   f.message_id = stem;
   f.text = o.format == "xml" ? write_cdm_xml(m.cdm) : write_cdm_kvn(m.cdm);
   f.pc = m.pc;
+  if (m.pc) f.pc_method = m.pc_method;
   return f;
 }
 
@@ -117,6 +118,7 @@ nlohmann::json to_json(const ScreenCdms& c) {
   for (const ScreenCdmFile& f : c.files) {
     nlohmann::json j = {{"file", f.path}, {"message_id", f.message_id}};
     j["pc"] = f.pc ? nlohmann::json(*f.pc) : nlohmann::json(nullptr);
+    j["pc_method"] = f.pc ? nlohmann::json(f.pc_method) : nlohmann::json(nullptr);
     files.push_back(std::move(j));
   }
   return {{"dir", c.dir}, {"format", c.format}, {"count", c.files.size()},

@@ -28,6 +28,7 @@ constexpr ParamFlagRow kRows[] = {
     {"span_s", "--span-s", ""},
     {"robust.threshold_m", "--threshold-m", ""},
     {"robust.step_s", "--step-s", ""},
+    {"assessment.window_s", "--window-s", ""},
 };
 
 constexpr RetiredFlag kSimRetired[] = {

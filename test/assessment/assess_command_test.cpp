@@ -44,7 +44,9 @@ TEST(AssessCommand, EncounterPlaneChan01IsThePublishedPc) {
   const nlohmann::json j = to_json(r);
   EXPECT_EQ(keys(j), (std::set<std::string>{"source", "hbr_m", "miss_m", "rel_speed_mps", "pc_2d",
                                             "pc_chan", "pc_max", "pc_max_scale",
-                                            "encounter_plane"}));
+                                            "encounter_plane", "pc", "method"}));
+  EXPECT_EQ(j["method"], "2d");  // no states: the 2D Pc is the only one
+  EXPECT_EQ(j["pc"], j["pc_2d"]);
   EXPECT_TRUE(j["rel_speed_mps"].is_null());
   EXPECT_EQ(keys(j["encounter_plane"]), std::set<std::string>{"principal"});
 }
@@ -69,7 +71,11 @@ TEST(AssessCommand, ShippedCdmGivesTheCaraPc) {
                          "source", "hbr_m", "miss_m", "rel_speed_mps", "pc_2d",
                          "pc_2d_abs_error", "pc_chan", "pc_max", "pc_max_scale",
                          "encounter_plane", "tca", "covariance_repaired",
-                         "covariance_min_eigenvalue_m2", "short_term", "cdm", "notes"}));
+                         "covariance_min_eigenvalue_m2", "short_term", "cdm", "notes", "pc",
+                         "method", "method_reason", "usage", "pc_3d_nc", "nc3d"}));
+  // 14 mm/s in GEO: the 2D usage checks fail and the escalation gives 3D-Nc.
+  EXPECT_EQ(r.method, "3d_nc");
+  EXPECT_EQ(j["pc"], j["pc_3d_nc"]);
   EXPECT_EQ(keys(j["cdm"]), (std::set<std::string>{"message_id", "tca", "miss_distance_m",
                                                    "relative_speed_mps", "collision_probability",
                                                    "collision_probability_method"}));

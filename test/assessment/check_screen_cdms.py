@@ -69,6 +69,7 @@ def screen(name, args):
 
 def check_ours(name, events, files, with_pc, hbr=None):
     worst_pc = 0.0
+    methods = {}
     for e, f in zip(events, files):
         args = ["assess", "--cdm", f["file"], "--json"] + (["--hbr-m", str(hbr)] if hbr else [])
         if not with_pc:
@@ -91,21 +92,30 @@ def check_ours(name, events, files, with_pc, hbr=None):
         # to EME2000 leaves distances unchanged to 1e-9 relative): within 10 um.
         check(abs(a["miss_m"] - e["miss_m"]) <= 1e-5,
               f"{f['file']}: miss from the states {a['miss_m']} vs {e['miss_m']}")
-        check(c["collision_probability_method"] == "FOSTER-1992", f"{f['file']}: method")
+        # The recommended Pc (pc_method_choice.hpp): the 2D Pc unless its usage checks fail.
+        codes = {"2d": "FOSTER-1992", "3d_nc": "HALL-2021", "mc": "ALFANO-2009"}
+        check(c["collision_probability_method"] == codes[a["method"]],
+              f"{f['file']}: method {c['collision_probability_method']} vs {a['method']}")
         # Pc recomputed from the written states and covariances. The written state rounding
         # (1 um per component) moves the encounter-plane miss by <= 2e-6 m, which changes
         # ln Pc by at most (miss + HBR) / sigma_min^2 x 2e-6 m (the Gaussian's log-slope);
         # with sigma_min = 50 m here and misses up to 5 km that is <= 4e-6 relative; the
-        # quadrature adds 1e-8 and the printed Pc (11 digits) 5e-11.
-        pc, pc_cdm = a["pc_2d"], c["collision_probability"]
+        # quadrature adds 1e-8 and the printed Pc (11 digits) 5e-11. A 3D-Nc value adds its
+        # time integral's relative accuracy (1e-4) from each of the two computations.
+        pc, pc_cdm = a["pc"], c["collision_probability"]
         s_min = min(a["encounter_plane"]["principal"]["sigma_x_m"], a["encounter_plane"]["principal"]["sigma_y_m"])
         tol = (e["miss_m"] + a["hbr_m"]) / s_min ** 2 * 2e-6 + 2e-8
+        if a["method"] == "3d_nc":
+            tol += 2e-4
         rel = abs(pc - pc_cdm) / pc_cdm if pc_cdm > 0 else abs(pc)
-        worst_pc = max(worst_pc, rel)
-        check(rel <= tol, f"{f['file']}: Pc {pc} vs COLLISION_PROBABILITY {pc_cdm} (rel {rel:.2e} > {tol:.2e})")
+        if a["method"] != "mc":  # a Monte Carlo from rounded states draws other samples
+            worst_pc = max(worst_pc, rel)
+            check(rel <= tol, f"{f['file']}: Pc {pc} vs COLLISION_PROBABILITY {pc_cdm} (rel {rel:.2e} > {tol:.2e})")
+        methods[a["method"]] = methods.get(a["method"], 0) + 1
         check(abs(f["pc"] - pc_cdm) <= 5e-11 * pc_cdm, f"{f['file']}: JSON pc vs the file")
     if with_pc:
-        print(f"{name}: worst relative Pc difference (evade assess --cdm vs the file): {worst_pc:.2e}")
+        print(f"{name}: worst relative Pc difference (evade assess --cdm vs the file): {worst_pc:.2e}; "
+              f"methods {methods}")
 
 
 def check_ccsds_ndm(name, events, files):

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "evade/assessment/assess_params.hpp"
 #include "evade/config/param_flags.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/robust_screen.hpp"
@@ -31,6 +32,8 @@ const ParamSpec* declaration(const std::string& key) {
     return s;
   if (const ParamSpec* s = config::find_param_spec(threat::evasion_params(), "", key)) return s;
   if (const ParamSpec* s = config::find_param_spec(conjunction::screen_scenario_params(), "", key))
+    return s;
+  if (const ParamSpec* s = config::find_param_spec(assessment::assess_params(), "assessment.", key))
     return s;
   return config::find_param_spec(conjunction::screen_options_params(), "robust.", key);
 }

@@ -57,6 +57,9 @@ struct Assessment {
   std::string covariance_propagation;
   std::array<bool, 2> npd = {false, false};  ///< covariance repaired by eigenvalue clipping
   std::array<double, 2> min_eigenvalue = {0.0, 0.0};
+  /// Smallest eigenvalue of each 3x3 position covariance as given (before any repair) [m^2]:
+  /// the 2D usage check's NPD indicator (pc_method_choice.hpp).
+  std::array<double, 2> min_position_eigenvalue_m2 = {0.0, 0.0};
   EncounterPlane plane;
   PrincipalEncounter principal;
   Pc2dResult pc_2d;

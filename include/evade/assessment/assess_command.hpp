@@ -21,6 +21,7 @@
 
 #include "evade/assessment/assess.hpp"
 #include "evade/assessment/cdm.hpp"
+#include "evade/assessment/pc_method_choice.hpp"
 #include "evade/config/scenario.hpp"
 
 namespace evade::assessment {
@@ -36,6 +37,7 @@ struct AssessRequest {
   std::optional<Cdm> cdm;      ///< the message the states came from: its own figures reported
   long mc_samples = 0;         ///< Monte Carlo samples (states only); 0: no Monte Carlo
   std::uint64_t mc_seed = 1;   ///< Monte Carlo seed
+  int threads = 1;             ///< Monte Carlo worker threads (>= 1)
 };
 
 /// From a scenario's `conjunction:` block and its assessment.* table; every key of sc must
@@ -57,7 +59,8 @@ struct CdmFigures {
   std::optional<double> relative_speed_mps;
   std::optional<double> collision_probability;
   std::optional<std::string> collision_probability_method;
-  std::vector<std::string> unit_notes;  ///< units read as the standard's equivalent spelling
+  std::vector<std::string> unit_notes;  ///< units read as the standard's equivalent spelling,
+                                        ///< and each 7x7..9x9 covariance not positive definite
 };
 
 /// What only an assessment from states has.
@@ -85,7 +88,10 @@ struct AssessResult {
   std::optional<double> pc_2d_abs_error;  ///< quadrature error estimate (reported from states)
   double pc_chan = 0.0;
   PcMaxResult pc_max;                     ///< Alfano's maximum and its covariance scale
-  std::optional<MonteCarloResult> pc_mc;  ///< with mc_samples > 0 (Wilson 95 % interval)
+  std::optional<MonteCarloResult> pc_mc;  ///< with mc_samples > 0, or run by the escalation
+  double pc = 0.0;              ///< the recommended Pc (pc_method_choice.hpp)
+  std::string method = "2d";    ///< the method that produced it: "2d", "3d_nc" or "mc"
+  std::optional<PcChoice> choice;  ///< from states: the usage checks, 3D-Nc when it ran
   std::optional<StatesAtTca> states;      ///< from states only
   std::optional<CdmFigures> cdm;          ///< from a CDM only
 };

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "evade/core/state.hpp"
 
 namespace evade::assessment {
@@ -76,6 +78,15 @@ std::vector<std::string> cdm_unit_notes(const Cdm& cdm);
 StateEci cdm_state(const Cdm& cdm, int i);
 /// Object i's 6x6 position-velocity covariance in its RTN frame [m^2, m^2/s, m^2/s^2].
 Mat6 cdm_cov_rtn(const Cdm& cdm, int i);
+/// Object i's covariance rows present: 0-5 (R, T, N, RDOT, TDOT, NDOT), then 6 (DRG), 7 (SRP)
+/// and 8 (THR) when the message gives their diagonal term.
+std::vector<int> cdm_cov_rows(const Cdm& cdm, int i);
+/// Object i's whole covariance over those rows (6x6, up to 9x9) in RTN, SI units; an
+/// off-diagonal term the message leaves out is 0.
+Eigen::MatrixXd cdm_cov_rtn_full(const Cdm& cdm, int i);
+/// One note per object whose covariance with drag/SRP/thrust rows (7x7 to 9x9) is not
+/// positive definite.
+std::vector<std::string> cdm_covariance_notes(const Cdm& cdm);
 /// A keyword's value (empty when absent).
 std::string cdm_value(const CdmSection& s, const std::string& key);
 

@@ -10,9 +10,10 @@
 // relative position and velocity of object 2 with respect to object 1 in object 1's RTN axes
 // (the vector difference rotated, no transport term, so |RELATIVE_VELOCITY| = RELATIVE_SPEED);
 // SCREEN_VOLUME a sphere of the threshold (RTN, ELLIPSOID with three equal semi-axes).
-// Covariance known for both objects: the RTN terms as given, COLLISION_PROBABILITY = the 2D
-// Pc over the hard-body disk (Foster & Estes 1992, pc_at_tca: encounter plane + adaptive
-// quadrature), COLLISION_PROBABILITY_METHOD = FOSTER-1992, and the hard-body radius in a
+// Covariance known for both objects: the RTN terms as given, COLLISION_PROBABILITY = the
+// recommended Pc (pc_method_choice.hpp: the 2D Pc of Foster & Estes 1992 unless its usage
+// checks fail, then 3D-Nc or Monte Carlo), COLLISION_PROBABILITY_METHOD = FOSTER-1992,
+// HALL-2021 or ALFANO-2009 with a COMMENT saying why, and the hard-body radius in a
 // relative-section COMMENT (and as AREA_PC = pi r^2 per object when the object radii are
 // known, so that a reader forming HBR = sqrt(A1/pi) + sqrt(A2/pi) recovers it).
 // Covariance not known: the standard still requires the 21 position-velocity terms, so they
@@ -26,6 +27,7 @@
 #include <optional>
 #include <string>
 
+#include "evade/assessment/assess_params.hpp"
 #include "evade/assessment/cdm.hpp"
 #include "evade/core/state.hpp"
 
@@ -59,13 +61,14 @@ struct EventCdmOptions {
   double creation_utc_j2000_s = 0.0;     ///< CREATION_DATE
   double hbr_m = 0.0;                    ///< hard-body radius for the Pc (> 0 with covariances)
   std::string hbr_source;                ///< said in the COMMENT ("sum of the object radii")
-  double pc_rel_tol = 1e-8;              ///< relative tolerance of the 2D Pc quadrature
+  AssessConfig assess;                   ///< the Pc method choice (pc_method_choice.hpp)
   std::string header_comment;            ///< optional header COMMENT (e.g. the objects' source)
 };
 
 struct EventCdm {
   Cdm cdm;
   std::optional<double> pc;  ///< the COLLISION_PROBABILITY written, when covariances are known
+  std::string pc_method;     ///< the method that gave it: "2d", "3d_nc" or "mc"
 };
 
 /// Builds and validates (validate_cdm) the message. Throws std::invalid_argument for a

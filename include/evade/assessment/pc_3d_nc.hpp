@@ -35,6 +35,8 @@ struct Nc3dResult {
   double t_begin_s = 0.0;       ///< integration window about TCA [s]
   double t_end_s = 0.0;
   double t_peak_s = 0.0;        ///< time of the largest collision rate, about TCA [s]
+  double conj_begin_s = 0.0;    ///< the span holding all but 5e-7 of Nc on each side [s]
+  double conj_end_s = 0.0;      ///< (CARA's TaConj, TbConj)
   double rate_peak_per_s = 0.0; ///< the largest collision rate dNc/dt [1/s]
   EncounterWindow coppola;      ///< Coppola's bounds for opt.gamma (also when window_s > 0)
   double period1_s = 0.0;       ///< two-body orbital periods [s]

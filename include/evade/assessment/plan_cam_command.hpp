@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/assessment/cam_planner.hpp"
+#include "evade/assessment/pc_method_choice.hpp"
 #include "evade/config/scenario.hpp"
 
 namespace evade::assessment {
@@ -59,6 +60,12 @@ struct PlanCamResult {
   std::optional<double> burn_utc_j2000_s;
   std::optional<std::int64_t> burn_unix_utime_us;
   std::vector<CamSweepRow> sweep;  ///< with a sweep request: one row per lead time
+  /// The recommended Pc before the burn (pc_method_choice.hpp) and its method. The planner's
+  /// model is the 2D Pc; when the usage checks reject it (method not "2d") the plan's Pc
+  /// figures are 2D figures and the text output says so.
+  double pc_before_recommended = 0.0;
+  std::string pc_method_before = "2d";
+  std::string pc_method_reason;
 };
 
 /// Throws std::invalid_argument for a bad request (either end of a sweep too) or input, and

@@ -56,6 +56,7 @@ struct ScreenCdmFile {
   std::string message_id;     ///< MESSAGE_ID = file stem
   std::string text;           ///< the message (KVN or XML)
   std::optional<double> pc;   ///< COLLISION_PROBABILITY when the covariance is known
+  std::string pc_method;      ///< its method (pc_method_choice.hpp): "2d", "3d_nc" or "mc"
 };
 
 struct ScreenCdms {

@@ -1,0 +1,162 @@
+// Usage checks and the 2D -> 3D-Nc -> Monte Carlo escalation
+// (include/evade/assessment/pc_method_choice.hpp gives the source and the indicators).
+#include "evade/assessment/pc_method_choice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+#include "evade/dynamics/kepler_propagator.hpp"
+
+namespace evade::assessment {
+namespace {
+
+double period_of(const StateEci& s, double mu) {
+  const double a = 1.0 / (2.0 / s.r_eci_m.norm() - s.v_eci_mps.squaredNorm() / mu);
+  return a > 0.0 ? kTwoPi * std::sqrt(a * a * a / mu) : 1e300;
+}
+
+double shorter_period(const Assessment& a, const EarthModel& earth) {
+  return std::min(period_of(a.at_tca[0].state, earth.mu_m3ps2),
+                  period_of(a.at_tca[1].state, earth.mu_m3ps2));
+}
+
+UsageFlag flag(const std::string& name, double value, double threshold, const std::string& what) {
+  UsageFlag f{name, value, threshold, value > threshold, what};
+  return f;
+}
+
+// erfc^-1(g) for 0 < g < 1 by Newton on erfc from the asymptotic start (a few iterations reach
+// rounding for the g of interest, 1e-16 .. 1e-2).
+double erfc_inverse(double g) {
+  double x = std::sqrt(-std::log(g));
+  for (int it = 0; it < 50; ++it) {
+    const double step = (std::erfc(x) - g) / (-2.0 / std::sqrt(kPi) * std::exp(-x * x));
+    x -= step;
+    if (std::abs(step) < 1e-15 * x) break;
+  }
+  return x;
+}
+
+// The first local maximum of the mean relative distance from t = 0 in direction sign, within
+// bound_s; bound_s when there is none.
+double distance_maximum(const KeplerOrbit& o1, const KeplerOrbit& o2, double sign, double bound_s) {
+  constexpr int kSteps = 720;  // 1/720 of the bound: 0.5 deg of the orbit
+  const double h = bound_s / kSteps;
+  auto d = [&](double t) { return (o2.state_at(t).r_eci_m - o1.state_at(t).r_eci_m).norm(); };
+  double prev = d(0.0), cur = d(sign * h);
+  for (int i = 2; i <= kSteps; ++i) {
+    const double next = d(sign * i * h);
+    if (cur >= prev && cur > next) return sign * (i - 1) * h;
+    prev = cur;
+    cur = next;
+  }
+  return sign * bound_s;
+}
+
+}  // namespace
+
+std::vector<UsageFlag> usage_2d(const Assessment& a, double hbr_m, const AssessConfig& cfg,
+                                const EarthModel& earth) {
+  const Mat3 c = a.at_tca[0].cov_eci.block<3, 3>(0, 0) + a.at_tca[1].cov_eci.block<3, 3>(0, 0);
+  Eigen::SelfAdjointEigenSolver<Mat3> es(0.5 * (c + c.transpose()));
+  Vec3 l = es.eigenvalues();
+  const double clip = std::pow(1e-4 * hbr_m, 2);  // CARA's Fclip: eigenvalues below are clipped
+  for (int i = 0; i < 3; ++i) l(i) = std::max(l(i), clip);
+  const Mat3 ainv = es.eigenvectors() * l.cwiseInverse().asDiagonal() * es.eigenvectors().transpose();
+  const Vec3 r = a.at_tca[1].state.r_eci_m - a.at_tca[0].state.r_eci_m;
+  const Vec3 v = a.at_tca[1].state.v_eci_mps - a.at_tca[0].state.v_eci_mps;
+  const double vav = v.dot(ainv * v);
+  const double t_min = -r.dot(ainv * v) / vav;
+  const double dtau = std::sqrt(2.0) * erfc_inverse(cfg.conj_duration_gamma) / std::sqrt(vav);
+  const double period = shorter_period(a, earth);
+  const double ta = t_min - dtau, tb = t_min + dtau;
+  std::vector<UsageFlag> f;
+  f.push_back(flag("extended", std::min(1.0, (tb - ta) / period), cfg.pc2d_extended_cutoff,
+                   "conjunction duration / shorter orbital period"));
+  f.push_back(flag("offset", std::min(1.0, std::max(std::abs(ta), std::abs(tb)) / period),
+                   cfg.pc2d_offset_cutoff,
+                   "farthest conjunction bound from TCA / shorter orbital period"));
+  // CARA's NPDIssues: a position covariance (either object's, or the combined one) with an
+  // eigenvalue <= 0. (A zero velocity block, how a CDM says "velocity not known", is not one.)
+  const bool npd = a.min_position_eigenvalue_m2[0] <= 0.0 || a.min_position_eigenvalue_m2[1] <= 0.0 ||
+                   es.eigenvalues().minCoeff() <= 0.0;
+  f.push_back(flag("npd", npd ? 1.0 : 0.0, 0.0,
+                   "a position covariance has an eigenvalue <= 0 (repaired before the Pc)"));
+  f.push_back(flag("short_term", a.short_term.valid ? 0.0 : 1.0, 0.0,
+                   a.short_term.valid ? "Chan/Alfano short-term check holds" : a.short_term.reason));
+  return f;
+}
+
+Nc3dSpans nc3d_spans(const Assessment& a, const Nc3dResult& nc, const EarthModel& earth) {
+  const KeplerOrbit o1(a.at_tca[0].state, earth.mu_m3ps2), o2(a.at_tca[1].state, earth.mu_m3ps2);
+  const double bound = std::min(shorter_period(a, earth), 1e7);
+  Nc3dSpans s;
+  s.segment_begin_s = distance_maximum(o1, o2, -1.0, bound);
+  s.segment_end_s = distance_maximum(o1, o2, 1.0, bound);
+  s.conj_begin_s = std::max(nc.conj_begin_s, s.segment_begin_s);
+  s.conj_end_s = std::min(nc.conj_end_s, s.segment_end_s);
+  return s;
+}
+
+std::vector<UsageFlag> usage_3d_nc(const Nc3dResult& nc, const Nc3dSpans& s,
+                                   const AssessConfig& cfg) {
+  std::vector<UsageFlag> f;
+  const double seg = s.segment_end_s - s.segment_begin_s;
+  f.push_back(flag("converged", nc.converged ? 0.0 : 1.0, 0.0,
+                   nc.converged ? "3D-Nc integral converged" : "3D-Nc: " + nc.failure));
+  f.push_back(flag("extended", (s.conj_end_s - s.conj_begin_s) / seg, cfg.nc3d_extended_cutoff,
+                   "conjunction span / encounter segment between relative-distance maxima"));
+  f.push_back(flag("offset",
+                   std::max(s.conj_begin_s / s.segment_begin_s, s.conj_end_s / s.segment_end_s),
+                   cfg.nc3d_offset_cutoff,
+                   "conjunction bound / segment bound on the same side of TCA"));
+  return f;
+}
+
+PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
+                   const EarthModel& earth, bool six_by_six, int threads) {
+  PcChoice c;
+  c.usage_2d = usage_2d(a, hbr_m, cfg, earth);
+  c.pc = a.pc_2d.pc;
+  c.method = "2d";
+  c.why = "no 2D usage check fails";
+  auto violated = [](const std::vector<UsageFlag>& f) {
+    return std::any_of(f.begin(), f.end(), [](const UsageFlag& u) { return u.violated; });
+  };
+  if (!violated(c.usage_2d)) return c;
+  MonteCarloOptions mc;
+  mc.window_s = cfg.window_s > 0.0 ? cfg.window_s : mc_window_s(a, hbr_m, cfg, earth);
+  if (six_by_six) {
+    Nc3dOptions o;
+    o.window_s = cfg.window_s;
+    o.gamma = cfg.conj_duration_gamma;
+    c.nc3d = pc_3d_nc(a.at_tca[0].state, a.at_tca[0].cov_eci, a.at_tca[1].state,
+                      a.at_tca[1].cov_eci, hbr_m, earth.mu_m3ps2, o);
+    c.spans = nc3d_spans(a, *c.nc3d, earth);
+    c.usage_3d_nc = usage_3d_nc(*c.nc3d, *c.spans, cfg);
+    if (!violated(c.usage_3d_nc)) {
+      c.pc = c.nc3d->pc;
+      c.method = "3d_nc";
+      c.why = "a 2D usage check fails; no 3D-Nc check fails";
+      return c;
+    }
+    if (cfg.window_s <= 0.0) mc.window_s = std::max(-c.nc3d->t_begin_s, c.nc3d->t_end_s);
+  }
+  mc.samples = cfg.mc_max_samples;
+  mc.target_rel_accuracy = cfg.mc_target_rel_accuracy;
+  mc.threads = threads;
+  mc.seed = 1;
+  const McEncounter e{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
+                      a.at_tca[1].cov_eci, hbr_m, earth};
+  c.mc = a.mc ? *a.mc : pc_monte_carlo(e, mc);  // a Monte Carlo the caller asked for serves
+  c.pc = c.mc->pc;
+  c.method = "mc";
+  c.why = six_by_six ? "a 2D usage check and a 3D-Nc check fail"
+                     : "a 2D usage check fails and 3D-Nc needs 6x6 covariances";
+  return c;
+}
+
+}  // namespace evade::assessment
