@@ -116,6 +116,7 @@ Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
                 "held constant over the shift";
   for (int i = 0; i < 2; ++i) {
     a.at_tca[i] = in.obj[i];
+    a.cov_unrepaired_eci[i] = in.obj[i].cov_eci;
     const Mat3 p = in.obj[i].cov_eci.block<3, 3>(0, 0);
     a.min_position_eigenvalue_m2[i] =
         Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (p + p.transpose())).eigenvalues().minCoeff();

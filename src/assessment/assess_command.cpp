@@ -79,7 +79,7 @@ AssessResult run_states(const AssessRequest& req) {
                          a.npd,     a.min_eigenvalue, a.plane,   a.short_term};
   if (req.cdm) r.cdm = cdm_figures(*req.cdm);
   const bool six = req.conjunction->obj[0].has_velocity_cov && req.conjunction->obj[1].has_velocity_cov;
-  r.choice = choose_pc(a, r.hbr_m, req.config, req.conjunction->earth, six, req.threads);
+  r.choice = choose_pc(a, r.hbr_m, req.config, req.conjunction->earth, six, req.threads, true);
   r.pc = r.choice->pc;
   r.method = r.choice->method;
   if (!r.pc_mc && r.choice->mc) r.pc_mc = r.choice->mc;
@@ -132,7 +132,7 @@ nlohmann::json usage_json(const std::vector<UsageFlag>& flags) {
 void add_choice_json(const PcChoice& c, nlohmann::json* j) {
   (*j)["method_reason"] = c.why;
   (*j)["usage"] = {{"pc_2d", usage_json(c.usage_2d)}};
-  if (!c.nc3d) return;
+  if (!c.nc3d) return;  // 3x3 covariances: no 3D-Nc
   const Nc3dResult& n = *c.nc3d;
   (*j)["pc_3d_nc"] = n.pc;
   (*j)["usage"]["pc_3d_nc"] = usage_json(c.usage_3d_nc);

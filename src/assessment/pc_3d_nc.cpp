@@ -39,6 +39,7 @@
 #include "evade/assessment/pc_3d_nc.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -63,7 +64,7 @@ constexpr double kNpdTolerance = 1e-4;
 
 std::string num(double x) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
+  (void)std::snprintf(buf, sizeof buf, "%.6g", x);
   return buf;
 }
 
@@ -129,8 +130,8 @@ bool near_retrograde(const StateEci& s) {
 }
 
 struct Oriented {
-  StateEci s[2];
-  Mat6 c[2];
+  std::array<StateEci, 2> s;
+  std::array<Mat6, 2> c;
 };
 
 Oriented rotate(const Oriented& in, const Mat3& m) {

@@ -3,7 +3,11 @@
 #include "evade/assessment/pc_method_choice.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <exception>
+#include <limits>
+#include <stdexcept>
 #include <string>
 
 #include <Eigen/Eigenvalues>
@@ -116,35 +120,62 @@ std::vector<UsageFlag> usage_3d_nc(const Nc3dResult& nc, const Nc3dSpans& s,
   return f;
 }
 
+namespace {
+
+bool any_violated(const std::vector<UsageFlag>& f) {
+  return std::any_of(f.begin(), f.end(), [](const UsageFlag& u) { return u.violated; });
+}
+
+Nc3dResult nc3d_of(const Assessment& a, const std::array<Mat6, 2>& cov, double hbr_m,
+                   const Nc3dOptions& o, const EarthModel& earth) {
+  return pc_3d_nc(a.at_tca[0].state, cov[0], a.at_tca[1].state, cov[1], hbr_m, earth.mu_m3ps2, o);
+}
+
+// 3D-Nc from the covariances as given (a slightly NPD one is used as it is, as CARA does), or
+// from the repaired ones when 3D-Nc refuses those; a refusal of both fails the check
+// "converged" with the reason.
+void run_3d_nc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
+               const EarthModel& earth, PcChoice* c) {
+  Nc3dOptions o;
+  o.window_s = cfg.window_s;
+  o.gamma = cfg.conj_duration_gamma;
+  try {
+    try {
+      c->nc3d = nc3d_of(a, a.cov_unrepaired_eci, hbr_m, o, earth);
+    } catch (const std::invalid_argument&) {
+      c->nc3d = nc3d_of(a, {a.at_tca[0].cov_eci, a.at_tca[1].cov_eci}, hbr_m, o, earth);
+    }
+  } catch (const std::exception& e) {
+    Nc3dResult failed;
+    failed.pc = std::numeric_limits<double>::quiet_NaN();
+    failed.failure = e.what();
+    c->nc3d = failed;
+  }
+  c->spans = nc3d_spans(a, *c->nc3d, earth);
+  c->usage_3d_nc = usage_3d_nc(*c->nc3d, *c->spans, cfg);
+}
+
+}  // namespace
+
 PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
-                   const EarthModel& earth, bool six_by_six, int threads) {
+                   const EarthModel& earth, bool six_by_six, int threads, bool every_method) {
   PcChoice c;
   c.usage_2d = usage_2d(a, hbr_m, cfg, earth);
   c.pc = a.pc_2d.pc;
   c.method = "2d";
   c.why = "no 2D usage check fails";
-  auto violated = [](const std::vector<UsageFlag>& f) {
-    return std::any_of(f.begin(), f.end(), [](const UsageFlag& u) { return u.violated; });
-  };
-  if (!violated(c.usage_2d)) return c;
+  const bool escalate = any_violated(c.usage_2d);
+  if (six_by_six && (escalate || every_method)) run_3d_nc(a, hbr_m, cfg, earth, &c);
+  if (!escalate) return c;
+  if (c.nc3d && !any_violated(c.usage_3d_nc)) {
+    c.pc = c.nc3d->pc;
+    c.method = "3d_nc";
+    c.why = "a 2D usage check fails; no 3D-Nc check fails";
+    return c;
+  }
   MonteCarloOptions mc;
   mc.window_s = cfg.window_s > 0.0 ? cfg.window_s : mc_window_s(a, hbr_m, cfg, earth);
-  if (six_by_six) {
-    Nc3dOptions o;
-    o.window_s = cfg.window_s;
-    o.gamma = cfg.conj_duration_gamma;
-    c.nc3d = pc_3d_nc(a.at_tca[0].state, a.at_tca[0].cov_eci, a.at_tca[1].state,
-                      a.at_tca[1].cov_eci, hbr_m, earth.mu_m3ps2, o);
-    c.spans = nc3d_spans(a, *c.nc3d, earth);
-    c.usage_3d_nc = usage_3d_nc(*c.nc3d, *c.spans, cfg);
-    if (!violated(c.usage_3d_nc)) {
-      c.pc = c.nc3d->pc;
-      c.method = "3d_nc";
-      c.why = "a 2D usage check fails; no 3D-Nc check fails";
-      return c;
-    }
-    if (cfg.window_s <= 0.0) mc.window_s = std::max(-c.nc3d->t_begin_s, c.nc3d->t_end_s);
-  }
+  if (c.nc3d && cfg.window_s <= 0.0) mc.window_s = std::max(-c.nc3d->t_begin_s, c.nc3d->t_end_s);
   mc.samples = cfg.mc_max_samples;
   mc.target_rel_accuracy = cfg.mc_target_rel_accuracy;
   mc.threads = threads;

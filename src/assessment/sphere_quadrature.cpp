@@ -26,8 +26,8 @@ SphereRule build_rule(int level) {
     }
   }
   SphereRule s;
-  s.dir.reserve(static_cast<std::size_t>(nu * nphi));
-  s.weight.reserve(static_cast<std::size_t>(nu * nphi));
+  s.dir.reserve(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nphi));
+  s.weight.reserve(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nphi));
   const double dphi = 2.0 * kPi / nphi;
   for (int i = 0; i < nu; ++i) {
     const double st = std::sqrt(std::max(0.0, 1.0 - u[i] * u[i]));

@@ -52,6 +52,9 @@ struct ShortTermCheck {
 
 struct Assessment {
   std::array<ObjectState, 2> at_tca;  ///< states and covariances used (after TCA shift, repair)
+  /// The covariances at TCA before any repair (3D-Nc takes a slightly NPD one as given, as
+  /// NASA CARA's Pc3D_Hall does) [m^2, m^2/s, m^2/s^2].
+  std::array<Mat6, 2> cov_unrepaired_eci = {Mat6::Zero(), Mat6::Zero()};
   double tca_shift_s = 0.0;       ///< TCA minus the epoch of the given states
   std::string tca_method;         ///< how the states were brought to TCA
   std::string covariance_propagation;
