@@ -20,6 +20,8 @@
 #include "param_flag_option.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/assessment/assess_command.hpp"
+#include "evade/distributed/distributed_pc_monte_carlo.hpp"
+#include "evade/distributed/mpi_session.hpp"
 
 namespace evade::cli {
 namespace {
@@ -62,8 +64,12 @@ int run(const Options& o) {
   AssessRequest req = o.plane.empty() ? states_request(o) : plane_request(o.plane);
   req.mc_samples = o.mc;
   req.mc_seed = o.seed;
-  req.threads = o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const distributed::MpiSession mpi;  // one process unless started by mpirun
+  req.mc_exec = distributed::mpi_mc_execution(
+      o.threads > 0 ? o.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
+      mpi);
   const AssessResult r = run_assess(req);
+  if (mpi.rank() != 0) return 0;  // every rank holds the result; rank 0 prints it
   // Every repair and every reading note on stderr as well as in the JSON and the text output:
   // a result computed from a repaired covariance must never look like one from the input.
   for (const std::string& w : assess_warnings(r))

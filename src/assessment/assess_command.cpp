@@ -55,15 +55,20 @@ AssessResult run_plane(const AssessRequest& req) {
 }
 
 AssessResult run_states(const AssessRequest& req) {
-  std::optional<MonteCarloOptions> mc;
-  if (req.mc_samples > 0) {
-    mc = MonteCarloOptions{};
-    mc->samples = req.mc_samples;
-    mc->seed = req.mc_seed;
-    mc->window_s = req.config.window_s;
-    mc->threads = req.threads;
+  Assessment a = assess(*req.conjunction, req.config);
+  if (req.mc_samples > 0) {  // as assess() would, with the request's runner (threads, ranks)
+    MonteCarloOptions o;
+    o.samples = req.mc_samples;
+    o.seed = req.mc_seed;
+    o.window_s = req.config.window_s > 0.0
+                     ? req.config.window_s
+                     : mc_window_s(a, req.conjunction->hbr_m, req.config, req.conjunction->earth);
+    o.threads = req.mc_exec.threads;
+    o.wave_blocks = req.mc_exec.wave_blocks;
+    const McEncounter e{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
+                        a.at_tca[1].cov_eci, req.conjunction->hbr_m, req.conjunction->earth};
+    a.mc = pc_monte_carlo(e, o, req.mc_exec.runner);
   }
-  const Assessment a = assess(*req.conjunction, req.config, mc);
   AssessResult r;
   r.source = req.source;
   r.hbr_m = req.conjunction->hbr_m;
@@ -79,10 +84,11 @@ AssessResult run_states(const AssessRequest& req) {
                          a.npd,     a.min_eigenvalue, a.plane,   a.short_term};
   if (req.cdm) r.cdm = cdm_figures(*req.cdm);
   const bool six = req.conjunction->obj[0].has_velocity_cov && req.conjunction->obj[1].has_velocity_cov;
-  r.choice = choose_pc(a, r.hbr_m, req.config, req.conjunction->earth, six, req.threads, true);
+  r.choice = choose_pc(a, r.hbr_m, req.config, req.conjunction->earth, six, req.mc_exec, true);
   r.pc = r.choice->pc;
   r.method = r.choice->method;
   if (!r.pc_mc && r.choice->mc) r.pc_mc = r.choice->mc;
+  r.mc_ranks = req.mc_exec.ranks;
   return r;
 }
 
@@ -241,7 +247,10 @@ nlohmann::json to_json(const AssessResult& r) {
                       {"pc_max_scale", r.pc_max.scale}, {"encounter_plane", plane_json(r)}};
   if (r.pc_2d_abs_error) j["pc_2d_abs_error"] = *r.pc_2d_abs_error;
   if (r.states) add_states_json(*r.states, &j);
-  if (r.pc_mc) add_monte_carlo_json(*r.pc_mc, &j);
+  if (r.pc_mc) {
+    add_monte_carlo_json(*r.pc_mc, &j);
+    j["ranks"] = r.mc_ranks;
+  }
   j["pc"] = r.pc;
   j["method"] = r.method;
   if (r.choice) add_choice_json(*r.choice, &j);

@@ -126,7 +126,7 @@ PcChoice event_pc(const ScreeningEvent& ev, const EventCdmOptions& opt) {
   AssessConfig cfg = opt.assess;
   cfg.tca_search_s = 0.0;  // the screener's TCA
   const Assessment a = assess(in, cfg);
-  return choose_pc(a, in.hbr_m, cfg, in.earth, true, 1);
+  return choose_pc(a, in.hbr_m, cfg, in.earth, true);
 }
 
 // The CCSDS name of a method (SANA's Pc-method codes where one exists).

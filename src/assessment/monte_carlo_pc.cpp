@@ -127,6 +127,7 @@ void check(const McEncounter& e, const MonteCarloOptions& opt) {
   if (!(e.hbr_m > 0.0) || !std::isfinite(e.hbr_m)) bad("hbr_m must be > 0 m");
   if (opt.threads < 1) bad("threads must be >= 1");
   if (!(opt.target_rel_accuracy >= 0.0)) bad("target_rel_accuracy must be >= 0");
+  if (opt.wave_blocks < 0) bad("wave_blocks must be >= 0");
   if (!e.obj1.stacked().allFinite() || !e.obj2.stacked().allFinite() ||
       !e.cov1_eci.allFinite() || !e.cov2_eci.allFinite()) {
     bad("states and covariances must be finite");
@@ -191,7 +192,7 @@ MonteCarloResult pc_monte_carlo(const McEncounter& e, const MonteCarloOptions& o
   check(e, opt);
   const McBlockRunner run = runner ? runner : McBlockRunner(&run_mc_blocks_threaded);
   const long blocks = (opt.samples + kMcBlockSamples - 1) / kMcBlockSamples;
-  const long wave = std::max<long>(1, opt.threads);
+  const long wave = opt.wave_blocks > 0 ? opt.wave_blocks : std::max<long>(1, opt.threads);
   MonteCarloResult out;
   out.window_s = opt.window_s;
   out.z = opt.z;

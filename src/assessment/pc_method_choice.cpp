@@ -158,7 +158,8 @@ void run_3d_nc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
 }  // namespace
 
 PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
-                   const EarthModel& earth, bool six_by_six, int threads, bool every_method) {
+                   const EarthModel& earth, bool six_by_six, const McExecution& exec,
+                   bool every_method) {
   PcChoice c;
   c.usage_2d = usage_2d(a, hbr_m, cfg, earth);
   c.pc = a.pc_2d.pc;
@@ -178,11 +179,12 @@ PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
   if (c.nc3d && cfg.window_s <= 0.0) mc.window_s = std::max(-c.nc3d->t_begin_s, c.nc3d->t_end_s);
   mc.samples = cfg.mc_max_samples;
   mc.target_rel_accuracy = cfg.mc_target_rel_accuracy;
-  mc.threads = threads;
+  mc.threads = exec.threads;
+  mc.wave_blocks = exec.wave_blocks;
   mc.seed = 1;
   const McEncounter e{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
                       a.at_tca[1].cov_eci, hbr_m, earth};
-  c.mc = a.mc ? *a.mc : pc_monte_carlo(e, mc);  // a Monte Carlo the caller asked for serves
+  c.mc = a.mc ? *a.mc : pc_monte_carlo(e, mc, exec.runner);  // one the caller asked for serves
   c.pc = c.mc->pc;
   c.method = "mc";
   c.why = six_by_six ? "a 2D usage check and a 3D-Nc check fail"

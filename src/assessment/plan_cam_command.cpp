@@ -176,8 +176,7 @@ PlanCamResult run_plan_cam(const PlanCamRequest& req) {
   {
     const ConjunctionInput& in = req.conjunction;
     const PcChoice c = choose_pc(assess(in, req.assess_config), in.hbr_m, req.assess_config,
-                                 in.earth, in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov,
-                                 1);
+                                 in.earth, in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov);
     r.pc_before_recommended = c.pc;
     r.pc_method_before = c.method;
     r.pc_method_reason = c.why;

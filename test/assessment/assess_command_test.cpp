@@ -129,7 +129,7 @@ TEST(AssessCommand, FormationCaseRecommends3dNcAndTheMonteCarloAgrees) {
   AssessRequest req =
       read_assess_request(config::Scenario::load(EVADE_TEST_SCENARIO_DIR "/formation-conjunction.yaml"));
   req.mc_samples = 10 * kMcBlockSamples;
-  req.threads = 2;
+  req.mc_exec.threads = 2;
   const AssessResult r = run_assess(req);
   ASSERT_TRUE(r.choice && r.choice->nc3d && r.pc_mc);
   EXPECT_EQ(r.method, "3d_nc");

@@ -37,7 +37,7 @@ struct AssessRequest {
   std::optional<Cdm> cdm;      ///< the message the states came from: its own figures reported
   long mc_samples = 0;         ///< Monte Carlo samples (states only); 0: no Monte Carlo
   std::uint64_t mc_seed = 1;   ///< Monte Carlo seed
-  int threads = 1;             ///< Monte Carlo worker threads (>= 1)
+  McExecution mc_exec;         ///< how a Monte Carlo runs (threads; MPI ranks)
 };
 
 /// From a scenario's `conjunction:` block and its assessment.* table; every key of sc must
@@ -92,6 +92,7 @@ struct AssessResult {
   double pc = 0.0;              ///< the recommended Pc (pc_method_choice.hpp)
   std::string method = "2d";    ///< the method that produced it: "2d", "3d_nc" or "mc"
   std::optional<PcChoice> choice;  ///< from states: the usage checks, 3D-Nc when it ran
+  int mc_ranks = 1;                ///< MPI ranks the Monte Carlo ran on
   std::optional<StatesAtTca> states;      ///< from states only
   std::optional<CdmFigures> cdm;          ///< from a CDM only
 };

@@ -46,7 +46,9 @@ struct MonteCarloOptions {
   double target_rel_accuracy = 0.0; ///< > 0: stop at half-width <= this x Pc [-]
   bool j2 = false;                  ///< two-body + J2 motion instead of two-body
   int threads = 1;                  ///< worker threads (>= 1)
+  int wave_blocks = 0;              ///< blocks handed to the runner at a time (0: threads)
 };
+
 
 struct MonteCarloResult {
   double pc = 0.0;
@@ -73,6 +75,15 @@ struct McEncounter {
 /// The default runs them on opt.threads threads; an MPI layer spreads them over ranks.
 using McBlockRunner = std::function<void(const McEncounter& e, const MonteCarloOptions& opt,
                                          long first, long count, long* hits)>;
+
+/// How a Monte Carlo runs: threads, and the block runner with its wave (MPI ranks set both:
+/// distributed_pc_monte_carlo.hpp). Empty runner: the threaded one.
+struct McExecution {
+  int threads = 1;
+  int wave_blocks = 0;  ///< 0: threads
+  McBlockRunner runner;
+  int ranks = 1;        ///< processes the runner spreads over (reported)
+};
 
 /// Throws std::invalid_argument for samples < 1, window_s <= 0, hbr_m <= 0, threads < 1,
 /// target_rel_accuracy < 0 or non-finite states and covariances.

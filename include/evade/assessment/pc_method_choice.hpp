@@ -66,11 +66,11 @@ Nc3dSpans nc3d_spans(const Assessment& a, const Nc3dResult& nc, const EarthModel
 std::vector<UsageFlag> usage_3d_nc(const Nc3dResult& nc, const Nc3dSpans& s,
                                    const AssessConfig& cfg);
 
-/// Runs the escalation on an assessment from states. threads: for the Monte Carlo; a Monte
+/// Runs the escalation on an assessment from states. exec: how its Monte Carlo runs; a Monte
 /// Carlo already in the assessment (asked for by the caller) is the escalation's, not rerun.
 /// every_method: 3D-Nc is computed (6x6 covariances) even when the 2D value is recommended.
 PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
-                   const EarthModel& earth, bool six_by_six, int threads,
+                   const EarthModel& earth, bool six_by_six, const McExecution& exec = {},
                    bool every_method = false);
 
 }  // namespace evade::assessment
