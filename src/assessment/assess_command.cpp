@@ -65,6 +65,7 @@ AssessResult run_states(const AssessRequest& req) {
                      : mc_window_s(a, req.conjunction->hbr_m, req.config, req.conjunction->earth);
     o.threads = req.mc_exec.threads;
     o.wave_blocks = req.mc_exec.wave_blocks;
+    o.j2 = req.config.mc_j2;
     const McEncounter e{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
                         a.at_tca[1].cov_eci, req.conjunction->hbr_m, req.conjunction->earth};
     a.mc = pc_monte_carlo(e, o, req.mc_exec.runner);

@@ -31,6 +31,8 @@ const Param<AssessConfig> kRows[] = {
                      "escalated Monte Carlo stops when the 95 % half-width is within this x Pc"),
     EVADE_PARAM_INT(AssessConfig, mc_max_samples, "-", 10000, 1000000000,
                     "escalated Monte Carlo: largest number of samples"),
+    EVADE_PARAM_BOOL(AssessConfig, mc_j2,
+                     "Monte Carlo samples move by two-body + J2 (DOP853) instead of two-body"),
 };
 
 }  // namespace

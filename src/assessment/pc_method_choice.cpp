@@ -181,6 +181,7 @@ PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
   mc.target_rel_accuracy = cfg.mc_target_rel_accuracy;
   mc.threads = exec.threads;
   mc.wave_blocks = exec.wave_blocks;
+  mc.j2 = cfg.mc_j2;
   mc.seed = 1;
   const McEncounter e{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
                       a.at_tca[1].cov_eci, hbr_m, earth};

@@ -21,6 +21,7 @@ struct AssessConfig {
   double nc3d_offset_cutoff = 0.75;    ///< 3D-Nc: bound / segment bound above this fails
   double mc_target_rel_accuracy = 0.05;  ///< escalated MC: stop at 95 % half-width <= this x Pc
   int mc_max_samples = 10000000;       ///< escalated MC: largest number of samples
+  bool mc_j2 = false;                  ///< Monte Carlo with two-body + J2 motion (else two-body)
 };
 
 ParamTable<AssessConfig> assess_params() noexcept;
