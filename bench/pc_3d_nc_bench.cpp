@@ -67,12 +67,17 @@ void leo_similar_to_2d(benchmark::State& state) {
 }
 BENCHMARK(leo_similar_to_2d)->Name("BM_Pc3dNcLeoSimilarTo2D")->Unit(benchmark::kMillisecond);
 
-void alfano_case01(benchmark::State& state) {
+// Alfano case 01 from its CDM, HBR 15 m.
+ConjunctionInput alfano01() {
   std::ifstream in(std::string(EVADE_BENCH_ALFANO_DIR) + "/AlfanoTestCase01.cdm");
   if (!in) throw std::runtime_error("cannot open AlfanoTestCase01.cdm");
   std::stringstream ss;
   ss << in.rdbuf();
-  const ConjunctionInput c = conjunction_from_cdm(read_cdm_text(ss.str()), 15.0, kEarthDefault);
+  return conjunction_from_cdm(read_cdm_text(ss.str()), 15.0, kEarthDefault);
+}
+
+void alfano_case01(benchmark::State& state) {
+  const ConjunctionInput c = alfano01();
   Nc3dOptions opt;
   opt.window_s = 21600.0;
   (void)sphere_rule(0);
@@ -111,11 +116,7 @@ void mc_leo(benchmark::State& state) {
 BENCHMARK(mc_leo)->Name("BM_PcMonteCarloLeoSimilarTo2D")->Unit(benchmark::kMillisecond);
 
 void mc_alfano01(benchmark::State& state) {
-  std::ifstream in(std::string(EVADE_BENCH_ALFANO_DIR) + "/AlfanoTestCase01.cdm");
-  if (!in) throw std::runtime_error("cannot open AlfanoTestCase01.cdm");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const ConjunctionInput c = conjunction_from_cdm(read_cdm_text(ss.str()), 15.0, kEarthDefault);
+  const ConjunctionInput c = alfano01();
   mc_run(state, McEncounter{c.obj[0].state, c.obj[1].state, c.obj[0].cov_eci, c.obj[1].cov_eci,
                             15.0, kEarthDefault},
          21600.0);

@@ -183,28 +183,14 @@ TEST(MonteCarloPc, IntervalContains2dPcForFastEncounter) {
 }
 
 TEST(MonteCarloPc, DepartsFrom2dPcAtLowRelativeSpeed) {
-  const double c1[21] = {1.988970273925819e+01, -3.524140813027809e+02, 6.496749385722737e+03,
-                         0, 0, 1.205039522307600e+00, 2.675448519614438e-02,
-                         -4.943011253984911e-01, 0, 3.761358714147070e-05,
-                         -1.027762112958557e-03, 1.780445954821163e-02, 0,
-                         -1.349905611451490e-06, 5.376164545080801e-08, 0, 0,
-                         -6.070876344492500e-05, 0, 0, 3.390390010767800e-09};
-  const double c2[21] = {1.989074842319444e+01, -3.524310089952797e+02, 6.496894829253188e+03,
-                         0, 0, 1.204674647143796e+00, 2.675573872452930e-02,
-                         -4.943115446971844e-01, 0, 3.761433292802947e-05,
-                         -1.027907518900499e-03, 1.780719276302711e-02, 0,
-                         -1.350111723313400e-06, 5.377343757879955e-08, 0, 0,
-                         -6.071534561359923e-05, 0, 0, 3.392080345234430e-09};
+  const McEncounter e = alfano_case1();
   ConjunctionInput in;
-  in.hbr_m = 15.0;
-  in.obj[0].state = {Vec3(153.446765, 41874.155870, 0.0) * 1e3,
-                     Vec3(3.066874761, -0.011373615, 0.0) * 1e3};
-  in.obj[1].state = {Vec3(153.447264, 41874.156370, 0.005) * 1e3,
-                     Vec3(3.066864761, -0.011363615, -0.000000001) * 1e3};
-  for (int i = 0; i < 2; ++i) {
-    in.obj[i].cov_eci = cov_eci_from_rtn(lower_rtn(i == 0 ? c1 : c2), in.obj[i].state);
-    in.obj[i].has_velocity_cov = true;
-  }
+  in.hbr_m = e.hbr_m;
+  in.obj[0].state = e.obj1;
+  in.obj[1].state = e.obj2;
+  in.obj[0].cov_eci = e.cov1_eci;
+  in.obj[1].cov_eci = e.cov2_eci;
+  for (auto& o : in.obj) o.has_velocity_cov = true;
   AssessConfig cfg;
   cfg.tca_search_s = 0.0;  // the published case is evaluated at the given states
   MonteCarloOptions mc;
