@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
@@ -28,7 +29,7 @@ void bring_to_tca(ConjunctionInput& in, const AssessConfig& cfg, Assessment& out
   for (int it = 0; it < 50; ++it) {
     const Vec3 r = in.obj[1].state.r_eci_m - in.obj[0].state.r_eci_m;
     const Vec3 v = in.obj[1].state.v_eci_mps - in.obj[0].state.v_eci_mps;
-    if (!(v.squaredNorm() > 0.0)) throw std::invalid_argument("assess: relative speed is zero");
+    if (!(v.squaredNorm() > 0.0)) return;  // no closest approach to find: the given epoch
     // f = r.v, f' = |v|^2 + r.(a2 - a1): the relative acceleration matters for slow pairs
     // (without it Newton oscillates with a growing step when r.a > |v|^2).
     const Vec3 a_rel =
@@ -73,6 +74,18 @@ ShortTermCheck short_term(const Assessment& a, double hbr_m, const AssessConfig&
                 " of the relative speed: velocity uncertainty is not negligible";
   }
   return st;
+}
+
+// The requested Monte Carlo, the last step of an assessment.
+Assessment finish(Assessment& a, const ConjunctionInput& in, const AssessConfig& cfg,
+                  const std::optional<MonteCarloOptions>& mc) {
+  if (mc) {
+    MonteCarloOptions o = *mc;
+    if (!(o.window_s > 0.0)) o.window_s = mc_window_s(a, in.hbr_m, cfg, in.earth);
+    a.mc = pc_monte_carlo(a.at_tca[0].state, a.at_tca[0].cov_eci, a.at_tca[1].state,
+                          a.at_tca[1].cov_eci, in.hbr_m, in.earth.mu_m3ps2, o);
+  }
+  return a;
 }
 
 }  // namespace
@@ -134,6 +147,18 @@ Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
     a.npd[i] = rep.npd;
     a.min_eigenvalue[i] = rep.min_eigenvalue_m2;
   }
+  const Vec3 v_rel = a.at_tca[1].state.v_eci_mps - a.at_tca[0].state.v_eci_mps;
+  if (!(v_rel.squaredNorm() > 0.0)) {  // no encounter plane: the 2D methods are undefined
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    a.plane.miss_3d_m = (a.at_tca[1].state.r_eci_m - a.at_tca[0].state.r_eci_m).norm();
+    a.principal = {nan, nan, nan, nan};
+    a.pc_2d = {nan, nan, 0};
+    a.pc_chan = nan;
+    a.pc_max = {nan, nan};
+    a.short_term.valid = false;
+    a.short_term.reason = "relative speed is zero: no encounter plane, the 2D Pc is undefined";
+    return finish(a, in, cfg, mc);
+  }
   a.plane = encounter_plane(a.at_tca[0].state, a.at_tca[0].cov_eci.block<3, 3>(0, 0),
                             a.at_tca[1].state, a.at_tca[1].cov_eci.block<3, 3>(0, 0));
   a.principal = principal_axes(a.plane);
@@ -141,13 +166,7 @@ Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
   a.pc_chan = pc_chan(a.principal, in.hbr_m);
   a.pc_max = pc_max_alfano(a.principal, in.hbr_m);
   a.short_term = short_term(a, in.hbr_m, cfg, in.earth);
-  if (mc) {
-    MonteCarloOptions o = *mc;
-    if (!(o.window_s > 0.0)) o.window_s = mc_window_s(a, in.hbr_m, cfg, in.earth);
-    a.mc = pc_monte_carlo(a.at_tca[0].state, a.at_tca[0].cov_eci, a.at_tca[1].state,
-                          a.at_tca[1].cov_eci, in.hbr_m, in.earth.mu_m3ps2, o);
-  }
-  return a;
+  return finish(a, in, cfg, mc);
 }
 
 }  // namespace evade::assessment

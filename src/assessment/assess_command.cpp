@@ -274,9 +274,13 @@ std::string to_text(const AssessResult& r) {
     t += b;
   }
   if (r.cdm) t += "  CDM " + r.cdm->message_id + ": TCA " + r.cdm->tca_utc + " UTC\n";
-  (void)std::snprintf(b, sizeof b, "  Pc 2D %.6e  Chan %.6e  max %.6e\n", r.pc_2d, r.pc_chan,
-                      r.pc_max.pc_max);
-  t += b;
+  if (std::isnan(r.pc_2d)) {
+    t += "  Pc 2D, Chan, max: undefined (zero relative speed: no encounter plane)\n";
+  } else {
+    (void)std::snprintf(b, sizeof b, "  Pc 2D %.6e  Chan %.6e  max %.6e\n", r.pc_2d, r.pc_chan,
+                        r.pc_max.pc_max);
+    t += b;
+  }
   if (r.pc_mc) {
     (void)std::snprintf(b, sizeof b, "  Pc Monte Carlo %.6e  [%.6e, %.6e]\n", r.pc_mc->pc,
                         r.pc_mc->pc_low, r.pc_mc->pc_high);

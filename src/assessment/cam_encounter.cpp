@@ -57,6 +57,9 @@ CamEncounter::CamEncounter(const ConjunctionInput& in, double lead_s, const Asse
     throw std::invalid_argument("lead_s = " + std::to_string(lead_s) +
                                 ": the burn must come a finite time > 0 s before TCA");
   a_ = assess(in, cfg);
+  if (!(a_.plane.rel_speed_mps > 0.0))
+    throw std::invalid_argument("plan cam: the relative speed is zero: the planner's 2D Pc model "
+                                "is undefined (evade assess gives the 3D-Nc Pc)");
   for (int i = 0; i < 2; ++i) six_[i] = in.obj[i].has_velocity_cov;
   burn_state_ = propagate_j2(a_.at_tca[0].state, -lead_s, earth_);
   cov1_burn_ = six_[0] ? propagate_covariance_j2(a_.at_tca[0].state, a_.at_tca[0].cov_eci,

@@ -73,11 +73,18 @@ std::vector<UsageFlag> usage_2d(const Assessment& a, double hbr_m, const AssessC
   const Vec3 r = a.at_tca[1].state.r_eci_m - a.at_tca[0].state.r_eci_m;
   const Vec3 v = a.at_tca[1].state.v_eci_mps - a.at_tca[0].state.v_eci_mps;
   const double vav = v.dot(ainv * v);
+  const double period = shorter_period(a, earth);
+  std::vector<UsageFlag> f;
+  if (!(vav > 0.0)) {  // zero relative velocity: the 2D method does not apply at all
+    f.push_back(flag("extended", 1.0, cfg.pc2d_extended_cutoff,
+                     "relative speed is zero: the conjunction has no duration bound"));
+    f.push_back(flag("offset", 1.0, cfg.pc2d_offset_cutoff,
+                     "relative speed is zero: no time of closest approach"));
+    return f;
+  }
   const double t_min = -r.dot(ainv * v) / vav;
   const double dtau = std::sqrt(2.0) * erfc_inverse(cfg.conj_duration_gamma) / std::sqrt(vav);
-  const double period = shorter_period(a, earth);
   const double ta = t_min - dtau, tb = t_min + dtau;
-  std::vector<UsageFlag> f;
   f.push_back(flag("extended", std::min(1.0, (tb - ta) / period), cfg.pc2d_extended_cutoff,
                    "conjunction duration / shorter orbital period"));
   f.push_back(flag("offset", std::min(1.0, std::max(std::abs(ta), std::abs(tb)) / period),
