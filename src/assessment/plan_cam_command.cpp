@@ -168,27 +168,36 @@ PlanCamRequest read_plan_cam_request_cdm(const config::Scenario& sc, const std::
   return r;
 }
 
+namespace {
+
+// The recommended Pc before the burn (pc_method_choice.hpp), after the planner has accepted
+// the encounter (it refuses a zero relative speed before any escalation runs).
+void add_recommended_pc(const PlanCamRequest& req, PlanCamResult* r) {
+  const ConjunctionInput& in = req.conjunction;
+  const PcChoice c = choose_pc(assess(in, req.assess_config), in.hbr_m, req.assess_config,
+                               in.earth, in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov);
+  r->pc_before_recommended = c.pc;
+  r->pc_method_before = c.method;
+  r->pc_method_reason = c.why;
+}
+
+}  // namespace
+
 PlanCamResult run_plan_cam(const PlanCamRequest& req) {
   PlanCamResult r;
   r.source = req.source;
   r.request = req.cam;
   r.epoch_utc_j2000_s = req.epoch_utc_j2000_s;
-  {
-    const ConjunctionInput& in = req.conjunction;
-    const PcChoice c = choose_pc(assess(in, req.assess_config), in.hbr_m, req.assess_config,
-                                 in.earth, in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov);
-    r.pc_before_recommended = c.pc;
-    r.pc_method_before = c.method;
-    r.pc_method_reason = c.why;
-  }
   if (req.sweep) {
     r.sweep = sweep_cam_lead(req.conjunction, sweep_leads(*req.sweep, req.cam, req.cam_config),
                              req.cam, req.assess_config, req.cam_config);
+    add_recommended_pc(req, &r);
     return r;
   }
   r.plan = plan_cam(req.conjunction, req.cam, req.assess_config, req.cam_config);
   r.burn_utc_j2000_s = burn_utc(req.epoch_utc_j2000_s, *r.plan);
   if (r.burn_utc_j2000_s) r.burn_unix_utime_us = unix_utime_from_j2000(*r.burn_utc_j2000_s);
+  add_recommended_pc(req, &r);
   return r;
 }
 
