@@ -36,8 +36,8 @@ What is checked:
    commands must appear in that script's text (its usage comment).
 3. Citations. No doc and no comment in src/ include/ apps/ test/ scripts/ bench/ cites a file
    outside the repository: a `NAME.md` that is not in the repository (e.g. "STYLE.md §2"),
-   a `../` path leading out of it or to nothing, an absolute home or workspace path
-   (/home/, /work/, /Users/, /root/, /mnt/, /srv/, ~/).
+   a `../` path leading out of it or to nothing, an absolute path under a home or
+   workspace directory (home, Users, work, root, mnt or srv at the root) or under ~/.
 
 Every problem is printed as FILE:LINE: message. Exit status 0 when there is none, 1 otherwise.
 """
@@ -640,7 +640,7 @@ SELF_TEST_EXPECT = [
     ("README.md", 16, "cites '../shared/notes', which is outside the repository"),
     ("docs/A.md", 2, "names 'docs/ARCH.md'"),
     ("src/core/a.cpp", 1, "cites 'STYLE.md'"),
-    ("src/core/a.cpp", 3, "cites '/home/me/notes.txt'"),
+    ("src/core/a.cpp", 3, "cites '~/notes.txt'"),
     ("src/core/a.cpp", 4, "cites '../../../elsewhere/x.hpp', which is outside"),
     ("scripts/tool", 2, "cites 'NOTES.md'"),
 ]
@@ -662,7 +662,7 @@ def self_test(evade_exe, node_exe):
         write("src/core/a.cpp",
               "// Validate, then trust (STYLE.md §3).\n"
               "const char* s = \"STYLE.md in a string is not a comment\";\n"
-              "/* notes: /home/me/notes.txt */\n"
+              "/* notes: ~/notes.txt */\n"
               "int x;  // from ../../../elsewhere/x.hpp; ../../README.md is fine\n")
         write("scripts/tool", "#!/bin/sh\n# tool [--known]  (NOTES.md)\necho \"#--x\"\n")
         problems = run_checks(root, evade_exe, node_exe)

@@ -10,17 +10,11 @@
 
 #include "evade/assessment/covariance.hpp"
 #include "evade/assessment/covariance_propagation.hpp"
+#include "evade/core/elements.hpp"
 #include "evade/dynamics/gravity.hpp"
 
 namespace evade::assessment {
 namespace {
-
-double period_s(const StateEci& s, const EarthModel& earth) {
-  const double r = s.r_eci_m.norm();
-  const double a = 1.0 / (2.0 / r - s.v_eci_mps.squaredNorm() / earth.mu_m3ps2);
-  if (!(a > 0.0)) return 1e300;  // hyperbolic: no period
-  return kTwoPi * std::sqrt(a * a * a / earth.mu_m3ps2);
-}
 
 // Newton on the range rate with two-body + J2 propagation of both objects.
 void bring_to_tca(ConjunctionInput& in, const AssessConfig& cfg, Assessment& out) {
@@ -59,7 +53,7 @@ ShortTermCheck short_term(const Assessment& a, double hbr_m, const AssessConfig&
   const Mat3 c = a.at_tca[0].cov_eci.block<3, 3>(0, 0) + a.at_tca[1].cov_eci.block<3, 3>(0, 0);
   const double sigma_along = std::sqrt(std::max(0.0, y.dot(c * y)));
   st.encounter_time_s = 2.0 * (5.0 * sigma_along + hbr_m) / a.plane.rel_speed_mps;
-  st.period_s = std::min(period_s(a.at_tca[0].state, earth), period_s(a.at_tca[1].state, earth));
+  st.period_s = shorter_period_s(a, earth);
   const Mat3 cv = a.at_tca[0].cov_eci.block<3, 3>(3, 3) + a.at_tca[1].cov_eci.block<3, 3>(3, 3);
   st.rel_speed_sigma_mps = std::sqrt(std::max(0.0, y.dot(cv * y)));
   if (st.encounter_time_s > cfg.short_term_max_period_fraction * st.period_s) {
@@ -76,19 +70,75 @@ ShortTermCheck short_term(const Assessment& a, double hbr_m, const AssessConfig&
   return st;
 }
 
-// The requested Monte Carlo, the last step of an assessment.
-Assessment finish(Assessment& a, const ConjunctionInput& in, const AssessConfig& cfg,
-                  const std::optional<MonteCarloOptions>& mc) {
-  if (mc) {
-    MonteCarloOptions o = *mc;
-    if (!(o.window_s > 0.0)) o.window_s = mc_window_s(a, in.hbr_m, cfg, in.earth);
-    a.mc = pc_monte_carlo(a.at_tca[0].state, a.at_tca[0].cov_eci, a.at_tca[1].state,
-                          a.at_tca[1].cov_eci, in.hbr_m, in.earth.mu_m3ps2, o);
+// The covariances at TCA: as given (3D-Nc takes them so) and repaired by eigenvalue clipping
+// (the 2D methods and the Monte Carlo), the whole 6x6 when its velocity block is given.
+void repair_covariances(const ConjunctionInput& in, Assessment* a) {
+  for (int i = 0; i < 2; ++i) {
+    a->at_tca[i] = in.obj[i];
+    a->cov_unrepaired_eci[i] = in.obj[i].cov_eci;
+    const Mat3 p = in.obj[i].cov_eci.block<3, 3>(0, 0);
+    a->min_position_eigenvalue_m2[i] =
+        Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (p + p.transpose())).eigenvalues().minCoeff();
+    if (in.obj[i].has_velocity_cov) {  // the whole 6x6 (a velocity-block NPD is an NPD too)
+      bool npd = false;
+      double min_ev = 0.0;
+      a->at_tca[i].cov_eci = repair_covariance6(in.obj[i].cov_eci, in.obj[i].name, &npd, &min_ev);
+      a->npd[i] = npd;
+      a->min_eigenvalue[i] = min_ev;
+      continue;
+    }
+    const CovarianceRepair rep =
+        repair_covariance(in.obj[i].cov_eci.block<3, 3>(0, 0), in.obj[i].name);
+    a->at_tca[i].cov_eci.block<3, 3>(0, 0) = rep.cov_m2;
+    a->npd[i] = rep.npd;
+    a->min_eigenvalue[i] = rep.min_eigenvalue_m2;
   }
-  return a;
+}
+
+// The encounter plane and the 2D methods; undefined (NaN) when the relative speed is zero.
+void two_d_methods(const ConjunctionInput& in, const AssessConfig& cfg, Assessment* a) {
+  const Vec3 v_rel = a->at_tca[1].state.v_eci_mps - a->at_tca[0].state.v_eci_mps;
+  if (!(v_rel.squaredNorm() > 0.0)) {  // no encounter plane
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    a->plane.miss_3d_m = (a->at_tca[1].state.r_eci_m - a->at_tca[0].state.r_eci_m).norm();
+    a->principal = {nan, nan, nan, nan};
+    a->pc_2d = {nan, nan, 0};
+    a->pc_chan = nan;
+    a->pc_max = {nan, nan};
+    a->short_term.valid = false;
+    a->short_term.reason = "relative speed is zero: no encounter plane, the 2D Pc is undefined";
+    return;
+  }
+  a->plane = encounter_plane(a->at_tca[0].state, a->at_tca[0].cov_eci.block<3, 3>(0, 0),
+                             a->at_tca[1].state, a->at_tca[1].cov_eci.block<3, 3>(0, 0));
+  a->principal = principal_axes(a->plane);
+  a->pc_2d = pc_2d(a->principal, in.hbr_m, cfg.pc_rel_tol);
+  a->pc_chan = pc_chan(a->principal, in.hbr_m);
+  a->pc_max = pc_max_alfano(a->principal, in.hbr_m);
+  a->short_term = short_term(*a, in.hbr_m, cfg, in.earth);
+}
+
+// The requested Monte Carlo, the last step of an assessment.
+void run_requested_mc(const ConjunctionInput& in, const AssessConfig& cfg,
+                      const std::optional<MonteCarloOptions>& mc, const McBlockRunner& runner,
+                      Assessment* a) {
+  if (!mc) return;
+  MonteCarloOptions o = *mc;
+  if (!(o.window_s > 0.0)) o.window_s = mc_window_s(*a, in.hbr_m, cfg, in.earth);
+  a->mc = pc_monte_carlo(mc_encounter(*a, in.hbr_m, in.earth), o, runner);
 }
 
 }  // namespace
+
+double shorter_period_s(const Assessment& a, const EarthModel& earth) {
+  return std::min(orbital_period_s(a.at_tca[0].state, earth.mu_m3ps2),
+                  orbital_period_s(a.at_tca[1].state, earth.mu_m3ps2));
+}
+
+McEncounter mc_encounter(const Assessment& a, double hbr_m, const EarthModel& earth) {
+  return McEncounter{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
+                     a.at_tca[1].cov_eci, hbr_m, earth};
+}
 
 double pc_at_tca(const ObjectState& o1, const ObjectState& o2, double hbr_m, double rel_tol) {
   const Mat3 c1 = repair_covariance(o1.cov_eci.block<3, 3>(0, 0), o1.name).cov_m2;
@@ -103,13 +153,11 @@ double mc_window_s(const Assessment& a, double hbr_m, const AssessConfig& cfg,
                                          a.at_tca[1].cov_eci.block<3, 3>(0, 0));
   const double sigma_max = std::sqrt(std::max(0.0, es.eigenvalues().maxCoeff()));
   const double w = (cfg.mc_window_sigmas * sigma_max + hbr_m) / a.plane.rel_speed_mps;
-  const double half_period =
-      0.5 * std::min(period_s(a.at_tca[0].state, earth), period_s(a.at_tca[1].state, earth));
-  return std::min(w, half_period);
+  return std::min(w, 0.5 * shorter_period_s(a, earth));
 }
 
 Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
-                  const std::optional<MonteCarloOptions>& mc) {
+                  const std::optional<MonteCarloOptions>& mc, const McBlockRunner& runner) {
   if (!(given.hbr_m > 0.0) || !std::isfinite(given.hbr_m)) {
     throw std::invalid_argument("assess: hbr_m must be a finite number > 0 m");
   }
@@ -127,46 +175,10 @@ Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
       : both6 ? "Phi P Phi^T with the two-body + J2 state transition matrix"
               : "6x6 covariances by the J2 state transition matrix; 3x3 position covariances "
                 "held constant over the shift";
-  for (int i = 0; i < 2; ++i) {
-    a.at_tca[i] = in.obj[i];
-    a.cov_unrepaired_eci[i] = in.obj[i].cov_eci;
-    const Mat3 p = in.obj[i].cov_eci.block<3, 3>(0, 0);
-    a.min_position_eigenvalue_m2[i] =
-        Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (p + p.transpose())).eigenvalues().minCoeff();
-    if (in.obj[i].has_velocity_cov) {  // the whole 6x6 (a velocity-block NPD is an NPD too)
-      bool npd = false;
-      double min_ev = 0.0;
-      a.at_tca[i].cov_eci = repair_covariance6(in.obj[i].cov_eci, in.obj[i].name, &npd, &min_ev);
-      a.npd[i] = npd;
-      a.min_eigenvalue[i] = min_ev;
-      continue;
-    }
-    const CovarianceRepair rep =
-        repair_covariance(in.obj[i].cov_eci.block<3, 3>(0, 0), in.obj[i].name);
-    a.at_tca[i].cov_eci.block<3, 3>(0, 0) = rep.cov_m2;
-    a.npd[i] = rep.npd;
-    a.min_eigenvalue[i] = rep.min_eigenvalue_m2;
-  }
-  const Vec3 v_rel = a.at_tca[1].state.v_eci_mps - a.at_tca[0].state.v_eci_mps;
-  if (!(v_rel.squaredNorm() > 0.0)) {  // no encounter plane: the 2D methods are undefined
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    a.plane.miss_3d_m = (a.at_tca[1].state.r_eci_m - a.at_tca[0].state.r_eci_m).norm();
-    a.principal = {nan, nan, nan, nan};
-    a.pc_2d = {nan, nan, 0};
-    a.pc_chan = nan;
-    a.pc_max = {nan, nan};
-    a.short_term.valid = false;
-    a.short_term.reason = "relative speed is zero: no encounter plane, the 2D Pc is undefined";
-    return finish(a, in, cfg, mc);
-  }
-  a.plane = encounter_plane(a.at_tca[0].state, a.at_tca[0].cov_eci.block<3, 3>(0, 0),
-                            a.at_tca[1].state, a.at_tca[1].cov_eci.block<3, 3>(0, 0));
-  a.principal = principal_axes(a.plane);
-  a.pc_2d = pc_2d(a.principal, in.hbr_m, cfg.pc_rel_tol);
-  a.pc_chan = pc_chan(a.principal, in.hbr_m);
-  a.pc_max = pc_max_alfano(a.principal, in.hbr_m);
-  a.short_term = short_term(a, in.hbr_m, cfg, in.earth);
-  return finish(a, in, cfg, mc);
+  repair_covariances(in, &a);
+  two_d_methods(in, cfg, &a);
+  run_requested_mc(in, cfg, mc, runner, &a);
+  return a;
 }
 
 }  // namespace evade::assessment

@@ -55,21 +55,17 @@ AssessResult run_plane(const AssessRequest& req) {
 }
 
 AssessResult run_states(const AssessRequest& req) {
-  Assessment a = assess(*req.conjunction, req.config);
-  if (req.mc_samples > 0) {  // as assess() would, with the request's runner (threads, ranks)
-    MonteCarloOptions o;
-    o.samples = req.mc_samples;
-    o.seed = req.mc_seed;
-    o.window_s = req.config.window_s > 0.0
-                     ? req.config.window_s
-                     : mc_window_s(a, req.conjunction->hbr_m, req.config, req.conjunction->earth);
-    o.threads = req.mc_exec.threads;
-    o.wave_blocks = req.mc_exec.wave_blocks;
-    o.j2 = req.config.mc_j2;
-    const McEncounter e{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
-                        a.at_tca[1].cov_eci, req.conjunction->hbr_m, req.conjunction->earth};
-    a.mc = pc_monte_carlo(e, o, req.mc_exec.runner);
+  std::optional<MonteCarloOptions> mc;
+  if (req.mc_samples > 0) {
+    mc = MonteCarloOptions{};
+    mc->samples = req.mc_samples;
+    mc->seed = req.mc_seed;
+    mc->window_s = req.config.window_s;  // 0: assess() takes mc_window_s
+    mc->threads = req.mc_exec.threads;
+    mc->wave_blocks = req.mc_exec.wave_blocks;
+    mc->j2 = req.config.mc_j2;
   }
+  const Assessment a = assess(*req.conjunction, req.config, mc, req.mc_exec.runner);
   AssessResult r;
   r.source = req.source;
   r.hbr_m = req.conjunction->hbr_m;

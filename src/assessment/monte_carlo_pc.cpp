@@ -12,6 +12,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "evade/core/elements.hpp"
+#include "evade/dynamics/gravity.hpp"
 #include "evade/dynamics/kepler_propagator.hpp"
 #include "evade/dynamics/orbit_propagator.hpp"
 
@@ -65,8 +67,6 @@ class PairMotion {
 
 double distance(const Pair& p) { return (p.b.r_eci_m - p.a.r_eci_m).norm(); }
 
-Vec3 gravity(const Vec3& r, double mu) { return -mu * r / std::pow(r.norm(), 3); }
-
 // Newton on the range rate inside [lo, hi] from the grid point (t0, p0); the smallest
 // distance evaluated.
 double refine_minimum(const PairMotion& m, double t0, const Pair& p0, double lo, double hi) {
@@ -74,7 +74,8 @@ double refine_minimum(const PairMotion& m, double t0, const Pair& p0, double lo,
   Pair p = p0;
   for (int it = 0; it < kNewtonIterations; ++it) {
     const Vec3 r = p.b.r_eci_m - p.a.r_eci_m, v = p.b.v_eci_mps - p.a.v_eci_mps;
-    const Vec3 acc = gravity(p.b.r_eci_m, m.mu()) - gravity(p.a.r_eci_m, m.mu());
+    const Vec3 acc = accel_two_body_eci_mps2(p.b.r_eci_m, m.mu()) -
+                     accel_two_body_eci_mps2(p.a.r_eci_m, m.mu());
     double den = v.squaredNorm() + r.dot(acc);
     if (!(den > 0.0)) den = v.squaredNorm();
     if (!(den > 0.0)) break;
@@ -113,11 +114,6 @@ bool is_hit(const PairMotion& m, double w, double period_s, double hbr_m,
   return false;
 }
 
-double period_of(const StateEci& s, double mu) {
-  const double a = 1.0 / (2.0 / s.r_eci_m.norm() - s.v_eci_mps.squaredNorm() / mu);
-  return a > 0.0 ? 2.0 * kPi * std::sqrt(a * a * a / mu) : 0.0;
-}
-
 void check(const McEncounter& e, const MonteCarloOptions& opt) {
   auto bad = [](const std::string& what) {
     throw std::invalid_argument("Monte Carlo Pc: " + what);
@@ -147,8 +143,8 @@ long pc_monte_carlo_block(const McEncounter& e, const MonteCarloOptions& opt, lo
                     static_cast<std::uint32_t>(block), static_cast<std::uint32_t>(block >> 32)};
   std::mt19937_64 rng(seq);
   std::normal_distribution<double> normal(0.0, 1.0);
-  const double period = std::min(period_of(e.obj1, e.earth.mu_m3ps2),
-                                 period_of(e.obj2, e.earth.mu_m3ps2));
+  const double period = std::min(orbital_period_s(e.obj1, e.earth.mu_m3ps2),
+                                 orbital_period_s(e.obj2, e.earth.mu_m3ps2));  // inf: unbound
   std::vector<double> t;
   std::vector<Pair> g;
   long hits = 0;
@@ -158,7 +154,7 @@ long pc_monte_carlo_block(const McEncounter& e, const MonteCarloOptions& opt, lo
     for (int i = 0; i < 6; ++i) z2(i) = normal(rng);
     const PairMotion m(StateEci::from_stacked(m1 + l1 * z1), StateEci::from_stacked(m2 + l2 * z2),
                        e.earth, opt.j2);
-    if (is_hit(m, opt.window_s, period > 0.0 ? period : opt.window_s, e.hbr_m, &t, &g)) ++hits;
+    if (is_hit(m, opt.window_s, period, e.hbr_m, &t, &g)) ++hits;
   }
   return hits;
 }
@@ -212,14 +208,6 @@ MonteCarloResult pc_monte_carlo(const McEncounter& e, const MonteCarloOptions& o
   }
   out.pc = static_cast<double>(out.hits) / static_cast<double>(out.samples);
   return out;
-}
-
-MonteCarloResult pc_monte_carlo(const StateEci& obj1, const Mat6& cov1_eci,
-                                const StateEci& obj2, const Mat6& cov2_eci, double hbr_m,
-                                double mu_m3ps2, const MonteCarloOptions& opt) {
-  McEncounter e{obj1, obj2, cov1_eci, cov2_eci, hbr_m, kEarthDefault};
-  e.earth.mu_m3ps2 = mu_m3ps2;
-  return pc_monte_carlo(e, opt);
 }
 
 }  // namespace evade::assessment

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "evade/core/constants.hpp"
+#include "evade/core/gauss_kronrod.hpp"
 
 namespace evade::assessment {
 namespace {
@@ -55,16 +56,11 @@ struct Panel {
   bool operator<(const Panel& o) const { return error < o.error; }
 };
 
-// Gauss-Kronrod (7, 15) nodes and weights (Piessens et al. 1983).
+// Gauss-Kronrod (7, 15) on [a, b] (core/gauss_kronrod.hpp).
 Panel gauss_kronrod(const Integrand& f, double a, double b) {
-  static const double xk[8] = {0.991455371120812639, 0.949107912342758525, 0.864864423359769073,
-                               0.741531185599394440, 0.586087235467691130, 0.405845151377397167,
-                               0.207784955007898468, 0.0};
-  static const double wk[8] = {0.022935322010529225, 0.063092092629978553, 0.104790010322250184,
-                               0.140653259715525919, 0.169004726639267903, 0.190350578064785410,
-                               0.204432940075298892, 0.209482141084727828};
-  static const double wg[4] = {0.129484966168869693, 0.279705391489276668,
-                               0.381830050505118945, 0.417959183673469388};
+  const double* const xk = kGk15Nodes;
+  const double* const wk = kGk15Weights;
+  const double* const wg = kG7Weights;
   const double c = 0.5 * (a + b);
   const double h = 0.5 * (b - a);
   const double fc = f(c);

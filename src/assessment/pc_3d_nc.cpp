@@ -50,12 +50,14 @@
 #include <Eigen/Eigenvalues>
 
 #include "evade/assessment/equinoctial.hpp"
+#include "evade/core/elements.hpp"
+#include "evade/core/erfc_inverse.hpp"
+#include "evade/core/gauss_kronrod.hpp"
 #include "nc_rate.hpp"
 
 namespace evade::assessment {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRateCut = 2.5e-6;  // rate / peak below which a window end is negligible
 // Accepted non-positive-definiteness: the smallest eigenvalue of the correlation matrix may be
 // down to -1e-4 (Alfano case 06's primary has -1.8e-5). Such a covariance is used as given,
@@ -165,23 +167,6 @@ bool element_pdf(const StateEci& s, const Mat6& c, double mu, nc::ElementPdf* p)
   return p->q.allFinite();
 }
 
-double period_s(const StateEci& s, double mu) {
-  const double a = 1.0 / (2.0 / s.r_eci_m.norm() - s.v_eci_mps.squaredNorm() / mu);
-  return 2.0 * kPi * std::sqrt(a * a * a / mu);
-}
-
-// x with erfc(x) = y, 0 < y < 1 (Newton on log erfc, from the asymptotic guess).
-double erfc_inv(double y) {
-  double x = y < 0.5 ? std::sqrt(-std::log(y)) : 0.0;
-  for (int i = 0; i < 100; ++i) {
-    const double ec = std::erfc(x);
-    const double step = (std::log(ec) - std::log(y)) * ec / (-2.0 / std::sqrt(kPi) * std::exp(-x * x));
-    x -= step;
-    if (std::abs(step) < 1e-14 * (1.0 + std::abs(x))) break;
-  }
-  return x;
-}
-
 }  // namespace
 
 EncounterWindow coppola_window(const StateEci& obj1, const Mat6& cov1_eci,
@@ -214,25 +199,13 @@ EncounterWindow coppola_window(const StateEci& obj1, const Mat6& cov1_eci,
   const double q0 = b.dot(re.tail<2>());
   const double dmin = -hbr_m * b.norm();
   const double dmax = hbr_m * std::sqrt(1.0 + b.squaredNorm());
-  const double t = erfc_inv(gamma) * sv2;  // AAS 12-248 eqs. 12-16
+  const double t = erfc_inverse(gamma) * sv2;  // AAS 12-248 eqs. 12-16
   w.tau0_s = (-t + q0 - dmax) / v0;
   w.tau1_s = (t + q0 - dmin) / v0;
   return w;
 }
 
 namespace {
-
-// Gauss-Kronrod (7, 15) abscissae and weights (QUADPACK qk15).
-constexpr double kXgk[8] = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-                            0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-                            0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-                            0.207784955007898467600689403773245, 0.0};
-constexpr double kWgk[8] = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-                            0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-                            0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-                            0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
-constexpr double kWg[4] = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-                           0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
 
 struct Panel {
   double a = 0.0, b = 0.0;
@@ -286,21 +259,21 @@ Panel TimeIntegral::evaluate(double a, double b) {
   const double c = 0.5 * (a + b), h = 0.5 * (b - a);
   double f[15], fs[15];
   for (int k = 0; k < 7; ++k) {
-    f[k] = rate_at(c - h * kXgk[k], &fs[k]);
-    f[14 - k] = rate_at(c + h * kXgk[k], &fs[14 - k]);
+    f[k] = rate_at(c - h * kGk15Nodes[k], &fs[k]);
+    f[14 - k] = rate_at(c + h * kGk15Nodes[k], &fs[14 - k]);
   }
   f[7] = rate_at(c, &fs[7]);
   Panel p{a, b, 0.0, 0.0, 0.0};
-  double gauss = kWg[3] * f[7];
+  double gauss = kG7Weights[3] * f[7];
   for (int k = 0; k < 8; ++k) {
     const double sym = k < 7 ? f[k] + f[14 - k] : f[7];
-    p.nc += kWgk[k] * sym;
-    p.nc_small += kWgk[k] * (k < 7 ? fs[k] + fs[14 - k] : fs[7]);
-    if (k % 2 == 1 && k < 7) gauss += kWg[k / 2] * sym;
+    p.nc += kGk15Weights[k] * sym;
+    p.nc_small += kGk15Weights[k] * (k < 7 ? fs[k] + fs[14 - k] : fs[7]);
+    if (k % 2 == 1 && k < 7) gauss += kG7Weights[k / 2] * sym;
   }
   const double mean = 0.5 * p.nc;
   double resasc = 0.0;
-  for (int k = 0; k < 15; ++k) resasc += kWgk[k < 8 ? k : 14 - k] * std::abs(f[k] - mean);
+  for (int k = 0; k < 15; ++k) resasc += kGk15Weights[k < 8 ? k : 14 - k] * std::abs(f[k] - mean);
   p.nc *= h;
   p.nc_small *= h;
   resasc *= h;
@@ -437,8 +410,8 @@ Nc3dResult pc_3d_nc(const StateEci& obj1, const Mat6& cov1_eci, const StateEci& 
   check_inputs(obj1, cov1_eci, obj2, cov2_eci, hbr_m, mu_m3ps2, opt);
   Nc3dResult res;
   res.coppola = coppola_window(obj1, cov1_eci, obj2, cov2_eci, hbr_m, opt.gamma);
-  res.period1_s = period_s(obj1, mu_m3ps2);
-  res.period2_s = period_s(obj2, mu_m3ps2);
+  res.period1_s = orbital_period_s(obj1, mu_m3ps2);
+  res.period2_s = orbital_period_s(obj2, mu_m3ps2);
   const Oriented o = reorient(Oriented{{obj1, obj2}, {cov1_eci, cov2_eci}});
   nc::ElementPdf p1, p2;
   if (!element_pdf(o.s[0], o.c[0], mu_m3ps2, &p1) || !element_pdf(o.s[1], o.c[1], mu_m3ps2, &p2)) {

@@ -12,36 +12,15 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "evade/core/erfc_inverse.hpp"
 #include "evade/dynamics/kepler_propagator.hpp"
 
 namespace evade::assessment {
 namespace {
 
-double period_of(const StateEci& s, double mu) {
-  const double a = 1.0 / (2.0 / s.r_eci_m.norm() - s.v_eci_mps.squaredNorm() / mu);
-  return a > 0.0 ? kTwoPi * std::sqrt(a * a * a / mu) : 1e300;
-}
-
-double shorter_period(const Assessment& a, const EarthModel& earth) {
-  return std::min(period_of(a.at_tca[0].state, earth.mu_m3ps2),
-                  period_of(a.at_tca[1].state, earth.mu_m3ps2));
-}
-
 UsageFlag flag(const std::string& name, double value, double threshold, const std::string& what) {
   UsageFlag f{name, value, threshold, value > threshold, what};
   return f;
-}
-
-// erfc^-1(g) for 0 < g < 1 by Newton on erfc from the asymptotic start (a few iterations reach
-// rounding for the g of interest, 1e-16 .. 1e-2).
-double erfc_inverse(double g) {
-  double x = std::sqrt(-std::log(g));
-  for (int it = 0; it < 50; ++it) {
-    const double step = (std::erfc(x) - g) / (-2.0 / std::sqrt(kPi) * std::exp(-x * x));
-    x -= step;
-    if (std::abs(step) < 1e-15 * x) break;
-  }
-  return x;
 }
 
 // The first local maximum of the mean relative distance from t = 0 in direction sign, within
@@ -73,7 +52,7 @@ std::vector<UsageFlag> usage_2d(const Assessment& a, double hbr_m, const AssessC
   const Vec3 r = a.at_tca[1].state.r_eci_m - a.at_tca[0].state.r_eci_m;
   const Vec3 v = a.at_tca[1].state.v_eci_mps - a.at_tca[0].state.v_eci_mps;
   const double vav = v.dot(ainv * v);
-  const double period = shorter_period(a, earth);
+  const double period = shorter_period_s(a, earth);
   std::vector<UsageFlag> f;
   if (!(vav > 0.0)) {  // zero relative velocity: the 2D method does not apply at all
     f.push_back(flag("extended", 1.0, cfg.pc2d_extended_cutoff,
@@ -103,7 +82,7 @@ std::vector<UsageFlag> usage_2d(const Assessment& a, double hbr_m, const AssessC
 
 Nc3dSpans nc3d_spans(const Assessment& a, const Nc3dResult& nc, const EarthModel& earth) {
   const KeplerOrbit o1(a.at_tca[0].state, earth.mu_m3ps2), o2(a.at_tca[1].state, earth.mu_m3ps2);
-  const double bound = std::min(shorter_period(a, earth), 1e7);
+  const double bound = std::min(shorter_period_s(a, earth), 1e7);
   Nc3dSpans s;
   s.segment_begin_s = distance_maximum(o1, o2, -1.0, bound);
   s.segment_end_s = distance_maximum(o1, o2, 1.0, bound);
@@ -190,9 +169,8 @@ PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
   mc.wave_blocks = exec.wave_blocks;
   mc.j2 = cfg.mc_j2;
   mc.seed = 1;
-  const McEncounter e{a.at_tca[0].state, a.at_tca[1].state, a.at_tca[0].cov_eci,
-                      a.at_tca[1].cov_eci, hbr_m, earth};
-  c.mc = a.mc ? *a.mc : pc_monte_carlo(e, mc, exec.runner);  // one the caller asked for serves
+  // A Monte Carlo the caller asked for (in the assessment) serves; else one is run.
+  c.mc = a.mc ? *a.mc : pc_monte_carlo(mc_encounter(a, hbr_m, earth), mc, exec.runner);
   c.pc = c.mc->pc;
   c.method = "mc";
   c.why = six_by_six ? "a 2D usage check and a 3D-Nc check fail"

@@ -5,6 +5,7 @@
 #include "evade/core/elements.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -99,6 +100,12 @@ double mean_motion_radps(double a_m, double mu_m3ps2) {
 
 double orbital_period_s(double a_m, double mu_m3ps2) {
   return kTwoPi / mean_motion_radps(a_m, mu_m3ps2);
+}
+
+double orbital_period_s(const StateEci& s, double mu_m3ps2) {
+  const double a = 1.0 / (2.0 / s.r_eci_m.norm() - s.v_eci_mps.squaredNorm() / mu_m3ps2);
+  return a > 0.0 ? kTwoPi * std::sqrt(a * a * a / mu_m3ps2)
+                 : std::numeric_limits<double>::infinity();
 }
 
 StateEci state_from_elements(const OrbitalElements& oe, double mu) {

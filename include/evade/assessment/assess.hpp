@@ -74,12 +74,21 @@ struct Assessment {
 
 /// Throws std::invalid_argument on bad input (hbr <= 0, zero relative speed, TCA not found
 /// within tca_search_s).
+/// With mc: its Monte Carlo too (window_s <= 0: mc_window_s), run by runner (empty: the
+/// threaded runner; distributed_pc_monte_carlo.hpp spreads it over MPI ranks).
 Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
-                  const std::optional<MonteCarloOptions>& mc = std::nullopt);
+                  const std::optional<MonteCarloOptions>& mc = std::nullopt,
+                  const McBlockRunner& runner = {});
 
 /// The Monte Carlo window for an assessment: min((k sigma_max + HBR) / v_rel, P/2).
 double mc_window_s(const Assessment& a, double hbr_m, const AssessConfig& cfg,
                    const EarthModel& earth);
+
+/// The shorter two-body period of the two objects at TCA [s] (+infinity when both are unbound).
+double shorter_period_s(const Assessment& a, const EarthModel& earth);
+
+/// Both objects at TCA (states and covariances used) as a Monte Carlo problem.
+McEncounter mc_encounter(const Assessment& a, double hbr_m, const EarthModel& earth);
 
 /// Pc only (2D quadrature) of two objects already at TCA, covariances used as given after
 /// repair; the planner's inner evaluation.

@@ -12,9 +12,10 @@
 // with it); it matters only for slow pairs that stay inside for longer than the window,
 // e.g. Alfano case 9 (2 mm/s): 0.28 over +-10800 s by entries, 0.365 by Alfano's 2009
 // count of every sample whose closest distance is below the radius.
-// Closest distance: the relative distance on a grid of step min(P/64, window/32) (P the
-// shorter period); every local minimum of the grid (and each end) whose lower bound
-// d - h (|v_rel| + a_max h) is below the radius is refined by Newton on the range rate,
+// Closest distance: the relative distance on a grid of step min(P/64, w/16) (w the window
+// half-width, P the shorter period, +infinity when unbound); every local minimum of the grid
+// (and each end) whose lower bound d - h (|v_rel| + a_max h) is below the radius is refined
+// by Newton on the range rate,
 // dt = -(r.v)/(|v|^2 + r.a), kept inside its grid bracket; an entry is an evaluated distance
 // below the radius after one at or above it (evaluated distances are true distances: a miss
 // cannot be counted as a hit).
@@ -89,11 +90,6 @@ struct McExecution {
 /// target_rel_accuracy < 0 or non-finite states and covariances.
 MonteCarloResult pc_monte_carlo(const McEncounter& e, const MonteCarloOptions& opt,
                                 const McBlockRunner& runner = {});
-
-/// The two-body form kept for callers with a bare gravitational parameter.
-MonteCarloResult pc_monte_carlo(const StateEci& obj1, const Mat6& cov1_eci,
-                                const StateEci& obj2, const Mat6& cov2_eci, double hbr_m,
-                                double mu_m3ps2, const MonteCarloOptions& opt);
 
 /// Hits of block b alone (the unit an MPI rank or a thread computes).
 long pc_monte_carlo_block(const McEncounter& e, const MonteCarloOptions& opt, long block);

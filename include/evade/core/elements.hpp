@@ -45,6 +45,9 @@ double true_from_mean_anomaly(double mean_anomaly_rad, double e);
 /// Mean motion sqrt(mu/a^3) [rad/s] and period [s].
 double mean_motion_radps(double a_m, double mu_m3ps2);
 double orbital_period_s(double a_m, double mu_m3ps2);
+/// Two-body period of the orbit through state s (vis-viva semi-major axis) [s]; +infinity for
+/// an unbound (parabolic or hyperbolic) state.
+double orbital_period_s(const StateEci& s, double mu_m3ps2);
 
 /// Elements -> ECI state. Throws std::invalid_argument for a <= 0, e outside [0,1), NaN.
 StateEci state_from_elements(const OrbitalElements& oe, double mu_m3ps2);
