@@ -77,8 +77,11 @@ int run(const Options& o) {
   if (o.common.json) print_json(j);
   else std::printf("%s", to_text(r).c_str());
   if (r.plan && !r.plan->verified_ok) {
-    (void)std::fprintf(stderr, "plan cam: the verification by propagation does not meet the request (Pc %.6e, miss %.3f m)\n",
-                       r.plan->verified.pc, r.plan->verified.miss_m);
+    (void)std::fprintf(stderr,
+                       "plan cam: the verification by propagation does not meet the request "
+                       "(recommended Pc %.6e by %s, miss %.3f m)\n",
+                       r.plan->verified_recommended.pc,
+                       r.plan->verified_recommended.method.c_str(), r.plan->verified.miss_m);
     return 1;
   }
   return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "evade/assessment/covariance_propagation.hpp"
+#include "evade/assessment/pc_method_choice.hpp"
 #include "evade/core/frames.hpp"
 
 namespace evade::assessment {
@@ -16,6 +17,7 @@ struct CamEncounter::Burned {
   double t_s = 0.0;             ///< new TCA minus the unburned TCA
   Mat6 phi = Mat6::Identity();  ///< primary: d x(new TCA) / d x(burn, after the burn)
   Mat3 cov1 = Mat3::Zero(), cov2 = Mat3::Zero();
+  Mat6 cov1_full = Mat6::Zero(), cov2_full = Mat6::Zero();  ///< velocity block zero if unknown
 };
 
 namespace {
@@ -90,16 +92,17 @@ CamEncounter::Burned CamEncounter::propagate_burn(const Vec3& dv_rtn_mps) const 
     b.t_s += dt;
   }
   if (!converged) throw std::invalid_argument("after the burn the TCA iteration did not converge");
-  b.cov1 = a_.at_tca[0].cov_eci.block<3, 3>(0, 0);
-  b.cov2 = a_.at_tca[1].cov_eci.block<3, 3>(0, 0);
+  b.cov1_full = a_.at_tca[0].cov_eci;
+  b.cov2_full = a_.at_tca[1].cov_eci;
   b.phi = state_transition_j2(s, lead_s_ + b.t_s, earth_);
   if (six_[0]) {
-    const Mat3 c = (b.phi * cov1_burn_ * b.phi.transpose()).block<3, 3>(0, 0);
-    b.cov1 = 0.5 * (c + c.transpose());  // symmetric to rounding
+    const Mat6 c = b.phi * cov1_burn_ * b.phi.transpose();
+    b.cov1_full = 0.5 * (c + c.transpose());  // symmetric to rounding
   }
   if (six_[1])
-    b.cov2 = propagate_covariance_j2(a_.at_tca[1].state, a_.at_tca[1].cov_eci, b.t_s, earth_)
-                 .block<3, 3>(0, 0);
+    b.cov2_full = propagate_covariance_j2(a_.at_tca[1].state, a_.at_tca[1].cov_eci, b.t_s, earth_);
+  b.cov1 = b.cov1_full.block<3, 3>(0, 0);
+  b.cov2 = b.cov2_full.block<3, 3>(0, 0);
   return b;
 }
 
@@ -124,6 +127,36 @@ CamLinearModel CamEncounter::linearize(const Vec3& dv_rtn_mps, EncounterOutcome*
   if (at_ref)
     *at_ref = make_outcome(b.primary, b.cov1, b.secondary, b.cov2, b.t_s, hbr_m_, cfg_.pc_rel_tol);
   return m;
+}
+
+namespace {
+
+RecommendedPc recommended(const Assessment& a, double hbr_m, const AssessConfig& cfg,
+                          const EarthModel& earth, bool six_by_six) {
+  const PcChoice c = choose_pc(a, hbr_m, cfg, earth, six_by_six);
+  return {c.pc, c.method, c.why};
+}
+
+}  // namespace
+
+RecommendedPc CamEncounter::recommended_pc_before() const {
+  return recommended(a_, hbr_m_, cfg_, earth_, six_[0] && six_[1]);
+}
+
+RecommendedPc CamEncounter::recommended_pc(const Vec3& dv_rtn_mps) const {
+  const Burned b = propagate_burn(dv_rtn_mps);
+  ConjunctionInput in;
+  in.hbr_m = hbr_m_;
+  in.earth = earth_;
+  in.obj[0] = a_.at_tca[0];
+  in.obj[1] = a_.at_tca[1];
+  in.obj[0].state = b.primary;
+  in.obj[1].state = b.secondary;
+  in.obj[0].cov_eci = b.cov1_full;
+  in.obj[1].cov_eci = b.cov2_full;
+  AssessConfig cfg = cfg_;
+  cfg.tca_search_s = 0.0;  // the states are at the refined new TCA
+  return recommended(assess(in, cfg), hbr_m_, cfg, earth_, six_[0] && six_[1]);
 }
 
 }  // namespace evade::assessment

@@ -19,6 +19,9 @@ const Param<CamConfig> kRows[] = {
                     "re-linearizations of the encounter about the burned trajectory"),
     EVADE_PARAM_REAL(CamConfig, dv_tol_mps, "m/s", 0.0, 1.0, true,
                      "re-linearization stops when the burn changes by less than this"),
+    EVADE_PARAM_INT(CamConfig, max_target_corrections, "-", 0, 50,
+                    "re-plans with the 2D target scaled by 2D/recommended Pc when the verified "
+                    "recommended Pc (3D-Nc or Monte Carlo) exceeds pc_max"),
 };
 
 }  // namespace

@@ -200,7 +200,7 @@ Vec3 make_feasible(const CamLinearModel& m, const CamRequest& req, double p, con
   while (!feasible(m.predict(hi * dv), p, req.min_miss_m)) {
     lo = hi;
     hi = 1.0 + 2.0 * (hi - 1.0);
-    if (hi > 2.0) throw std::invalid_argument("the linear model has no feasible burn along the sweep's");
+    if (hi > 2.0) return Vec3::Constant(std::numeric_limits<double>::infinity());
   }
   for (int i = 0; i < 60 && hi - lo > 1e-15; ++i) {
     const double mid = 0.5 * (lo + hi);
@@ -230,6 +230,25 @@ Vec3 solve_along_track(const CamLinearModel& m, const CamRequest& req, double p,
   return Vec3(0.0, best, 0.0);
 }
 
+// The better start of the encounter-plane sweep (scaled until the full model finds it
+// feasible, within 2x) and the along-track burn; throws when neither gives one.
+Vec3 best_start(const CamLinearModel& m, const CamRequest& req, double p, const CamConfig& cfg) {
+  const PlaneModel pm = plane_model(m);
+  Vec3 start = make_feasible(m, req, p, sweep_boundary(pm, p, req.min_miss_m, cfg.boundary_angles));
+  try {
+    const Vec3 along = solve_along_track(m, req, p, cfg);
+    if (!(along.norm() >= start.norm())) start = along;  // also replaces a failed sweep
+  } catch (const std::invalid_argument&) {
+    if (!start.allFinite()) {
+      throw std::invalid_argument(
+          "the linear model has no feasible burn: the encounter-plane sweep's burn stays "
+          "infeasible when scaled up to 2x and no along-track burn within cam.max_dv_mps = " +
+          num(cfg.max_dv_mps) + " m/s meets the request");
+    }
+  }
+  return start;
+}
+
 }  // namespace
 
 void validate_cam_request(const CamRequest& req, const CamConfig& cfg) {
@@ -254,16 +273,7 @@ Vec3 solve_cam_model(const CamLinearModel& m, const CamRequest& req, double pc_t
     dv = solve_along_track(m, req, pc_target, cfg);
     *search = "along-track 1-D: bracket and bisection of the first feasible |dv_T| on each side";
   } else {
-    const PlaneModel pm = plane_model(m);
-    Vec3 start = make_feasible(
-        m, req, pc_target, sweep_boundary(pm, pc_target, req.min_miss_m, cfg.boundary_angles));
-    try {  // the along-track burn as a second start: the best of the two goes on
-      const Vec3 along = solve_along_track(m, req, pc_target, cfg);
-      if (along.norm() < start.norm()) start = along;
-    } catch (const std::invalid_argument&) {
-      // no along-track burn within the cap: the sweep's start stands
-    }
-    dv = polish(m, req, pc_target, start, nlopt_result);
+    dv = polish(m, req, pc_target, best_start(m, req, pc_target, cfg), nlopt_result);
     *search = "encounter-plane boundary sweep (" + std::to_string(cfg.boundary_angles) +
               " directions, every local minimum refined by golden section) and the along-track "
               "burn as starts, + NLopt SLSQP";
@@ -271,6 +281,35 @@ Vec3 solve_cam_model(const CamLinearModel& m, const CamRequest& req, double pc_t
   if (!(dv.norm() <= cfg.max_dv_mps)) unreachable(req, dv.norm(), cfg);
   return dv;
 }
+
+namespace {
+
+// The burn for one 2D target (steps 1-3 above), its exact outcome and its recommended Pc.
+void plan_for_target(const CamEncounter& enc, const CamRequest& aim, const CamConfig& cfg,
+                     const CamLinearModel& first, CamPlan* plan) {
+  CamLinearModel m = first;
+  for (int k = 0; k < cfg.max_relinearizations; ++k) {
+    const Vec3 dv =
+        solve_cam_model(m, aim, plan->pc_target_2d, cfg, &plan->search, &plan->nlopt_result);
+    plan->last_change_mps = (dv - m.dv_ref_rtn_mps).norm();
+    plan->dv_rtn_mps = dv;
+    plan->predicted = m.predict(dv);
+    plan->relinearizations = k + 1;
+    if (plan->last_change_mps < cfg.dv_tol_mps || k + 1 == cfg.max_relinearizations) break;
+    m = enc.linearize(dv);
+  }
+  plan->predicted_first = first.predict(plan->dv_rtn_mps);
+  plan->dv_mps = plan->dv_rtn_mps.norm();
+  plan->dv_eci_mps = enc.rtn_to_eci() * plan->dv_rtn_mps;
+  plan->verified = enc.outcome(plan->dv_rtn_mps);
+  plan->verified_recommended = enc.recommended_pc(plan->dv_rtn_mps);
+}
+
+bool recommended_ok(const EncounterOutcome& e, const RecommendedPc& r, const CamRequest& req) {
+  return r.pc <= req.pc_max && e.miss_m >= req.min_miss_m;
+}
+
+}  // namespace
 
 CamPlan plan_cam(const CamEncounter& enc, const CamRequest& req, const CamConfig& cfg) {
   validate_cam_request(req, cfg);
@@ -281,32 +320,29 @@ CamPlan plan_cam(const CamEncounter& enc, const CamRequest& req, const CamConfig
   plan.burn_from_epoch_s = a.tca_shift_s - enc.lead_s();
   plan.primary_at_burn = enc.primary_at_burn();
   plan.pc_target = req.pc_max * (1.0 - cfg.pc_margin);
+  plan.pc_target_2d = plan.pc_target;
   plan.before = {0.0, a.pc_2d.pc, a.plane.miss_3d_m, a.plane.rel_speed_mps};
-  if (feasible(plan.before, req.pc_max, req.min_miss_m)) {
+  plan.before_recommended = enc.recommended_pc_before();
+  if (recommended_ok(plan.before, plan.before_recommended, req)) {
     plan.maneuver_needed = false;
     plan.predicted = plan.predicted_first = plan.verified = plan.before;
+    plan.verified_recommended = plan.before_recommended;
     plan.verified_ok = true;
-    plan.search = "none: Pc and miss already meet the request";
+    plan.search = "none: the recommended Pc and the miss already meet the request";
     return plan;
   }
   CamRequest aim = req;  // what the planner aims at: the request with its margins
   if (req.min_miss_m > 0.0) aim.min_miss_m = req.min_miss_m + cfg.miss_margin_m;
   const CamLinearModel first = enc.linearize(Vec3::Zero());
-  CamLinearModel m = first;
-  for (int k = 0; k < cfg.max_relinearizations; ++k) {
-    const Vec3 dv = solve_cam_model(m, aim, plan.pc_target, cfg, &plan.search, &plan.nlopt_result);
-    plan.last_change_mps = (dv - m.dv_ref_rtn_mps).norm();
-    plan.dv_rtn_mps = dv;
-    plan.predicted = m.predict(dv);
-    plan.relinearizations = k + 1;
-    if (plan.last_change_mps < cfg.dv_tol_mps || k + 1 == cfg.max_relinearizations) break;
-    m = enc.linearize(dv);
+  for (int j = 0; j <= cfg.max_target_corrections; ++j) {
+    plan_for_target(enc, aim, cfg, first, &plan);
+    plan.target_corrections = j;
+    plan.verified_ok = recommended_ok(plan.verified, plan.verified_recommended, req);
+    const double p_rec = plan.verified_recommended.pc;
+    if (plan.verified_ok || !(p_rec > 0.0) || plan.verified_recommended.method == "2d") break;
+    plan.pc_target_2d =
+        std::min(plan.pc_target_2d, plan.verified.pc) * plan.pc_target / p_rec;
   }
-  plan.predicted_first = first.predict(plan.dv_rtn_mps);
-  plan.dv_mps = plan.dv_rtn_mps.norm();
-  plan.dv_eci_mps = enc.rtn_to_eci() * plan.dv_rtn_mps;
-  plan.verified = enc.outcome(plan.dv_rtn_mps);
-  plan.verified_ok = feasible(plan.verified, req.pc_max, req.min_miss_m);
   return plan;
 }
 

@@ -52,6 +52,10 @@ std::string utc_text(double t_j2000_s) {
   return format_calendar_utc(calendar_from_seconds_since_j2000(t_j2000_s));
 }
 
+nlohmann::json recommended_json(const RecommendedPc& r) {
+  return {{"pc", r.pc}, {"method", r.method}, {"reason", r.why}};
+}
+
 nlohmann::json plan_json(const CamPlan& p, const std::optional<double>& epoch_utc_j2000_s) {
   using config::vec_json;
   nlohmann::json j = {{"maneuver_needed", p.maneuver_needed}, {"lead_s", p.lead_s},
@@ -65,6 +69,10 @@ nlohmann::json plan_json(const CamPlan& p, const std::optional<double>& epoch_ut
                       {"relinearizations", p.relinearizations},
                       {"last_change_mps", p.last_change_mps}, {"search", p.search},
                       {"nlopt_result", p.nlopt_result}};
+  j["before_recommended"] = recommended_json(p.before_recommended);
+  j["verified_recommended"] = recommended_json(p.verified_recommended);
+  j["target_corrections"] = p.target_corrections;
+  j["pc_target_2d"] = p.pc_target_2d;
   j["primary_at_burn"] = {{"r_eci_m", vec_json(p.primary_at_burn.r_eci_m)},
                           {"v_eci_mps", vec_json(p.primary_at_burn.v_eci_mps)}};
   if (const std::optional<double> t = burn_utc(epoch_utc_j2000_s, p)) j["burn_utc"] = utc_text(*t);
@@ -87,19 +95,23 @@ nlohmann::json sweep_json(const PlanCamResult& r) {
 std::string sweep_csv(const PlanCamResult& r) {
   std::string t =
       "lead_s,dv_mps,dv_r_mps,dv_t_mps,dv_n_mps,pc_before,pc_after,miss_before_m,"
-      "miss_after_m,tca_shift_s,verified_ok,error\n";
+      "miss_after_m,tca_shift_s,pc_before_recommended,pc_after_recommended,method_after,"
+      "verified_ok,error\n";
   char b[512];
   for (const CamSweepRow& row : r.sweep) {
     const CamPlan& p = row.plan;
     if (!row.ok) {
-      (void)std::snprintf(b, sizeof b, "%.6g,,,,,,,,,,,\"", row.lead_s);
+      (void)std::snprintf(b, sizeof b, "%.6g,,,,,,,,,,,,,,\"", row.lead_s);
       t += b + row.error + "\"\n";
       continue;
     }
-    (void)std::snprintf(b, sizeof b, "%.6g,%.9g,%.9g,%.9g,%.9g,%.6e,%.6e,%.4f,%.4f,%.6g,%d,\n",
+    (void)std::snprintf(b, sizeof b,
+                        "%.6g,%.9g,%.9g,%.9g,%.9g,%.6e,%.6e,%.4f,%.4f,%.6g,%.6e,%.6e,%s,%d,\n",
                         row.lead_s, p.dv_mps, p.dv_rtn_mps.x(), p.dv_rtn_mps.y(),
                         p.dv_rtn_mps.z(), p.before.pc, p.verified.pc, p.before.miss_m,
-                        p.verified.miss_m, p.verified.tca_s, p.verified_ok ? 1 : 0);
+                        p.verified.miss_m, p.verified.tca_s, p.before_recommended.pc,
+                        p.verified_recommended.pc, p.verified_recommended.method.c_str(),
+                        p.verified_ok ? 1 : 0);
     t += b;
   }
   return t;
@@ -121,7 +133,20 @@ std::string burn_text(const CamPlan& p) {
                       "  verified:  Pc %.6e  miss %.3f m  new TCA %+.6f s (two-body + J2 "
                       "propagation)\n",
                       p.verified.pc, p.verified.miss_m, p.verified.tca_s);
-  return t + b;
+  t += b;
+  (void)std::snprintf(b, sizeof b,
+                      "  verified recommended Pc: %.6e by %s (%s)%s\n",
+                      p.verified_recommended.pc, p.verified_recommended.method.c_str(),
+                      p.verified_recommended.why.c_str(), p.verified_ok ? "" : "  NOT MET");
+  t += b;
+  if (p.target_corrections > 0) {
+    (void)std::snprintf(b, sizeof b,
+                        "  2D target corrected %d time(s) to %.6e so the recommended Pc meets "
+                        "pc_max\n",
+                        p.target_corrections, p.pc_target_2d);
+    t += b;
+  }
+  return t;
 }
 
 std::string plan_text(const PlanCamResult& r) {
@@ -138,8 +163,9 @@ std::string plan_text(const PlanCamResult& r) {
                       r.pc_method_reason.c_str());
   t += b;
   if (r.pc_method_before != "2d")
-    t += "  note: the planner's Pc figures are 2D Pc, which the usage checks reject for this "
-         "encounter; verify the burn with `evade assess` on the post-burn states\n";
+    t += "  note: the planner's model is the 2D Pc, which the usage checks reject for this "
+         "encounter; whether a burn is needed and whether it meets pc_max are decided by the "
+         "recommended Pc\n";
   if (!p.maneuver_needed) return t + "  no manoeuvre needed\n";
   return t + burn_text(p);
 }
@@ -197,7 +223,9 @@ PlanCamResult run_plan_cam(const PlanCamRequest& req) {
   r.plan = plan_cam(req.conjunction, req.cam, req.assess_config, req.cam_config);
   r.burn_utc_j2000_s = burn_utc(req.epoch_utc_j2000_s, *r.plan);
   if (r.burn_utc_j2000_s) r.burn_unix_utime_us = unix_utime_from_j2000(*r.burn_utc_j2000_s);
-  add_recommended_pc(req, &r);
+  r.pc_before_recommended = r.plan->before_recommended.pc;
+  r.pc_method_before = r.plan->before_recommended.method;
+  r.pc_method_reason = r.plan->before_recommended.why;
   return r;
 }
 

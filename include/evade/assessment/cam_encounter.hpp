@@ -19,7 +19,14 @@
 // reference TCA. This is the first-order (Clohessy-Wiltshire-like) model of the burn; for an
 // along-track burn it gives the classical along-track drift 3 dv_T t - (4 dv_T / n) sin(n t)
 // (Vallado 4th ed. sec. 6.8, CW solution).
+//
+// Recommended Pc of a burn (CamEncounter::recommended_pc): the same exact propagation to the
+// new TCA, both objects' full covariances (6x6 when given) propagated there, and the
+// escalation of pc_method_choice.hpp (2D -> 3D-Nc -> Monte Carlo) run on those states as given
+// (they are at the refined TCA), with the assessment's window (assessment.window_s) about it.
 #pragma once
+
+#include <string>
 
 #include "evade/assessment/assess.hpp"
 
@@ -31,6 +38,13 @@ struct EncounterOutcome {
   double pc = 0.0;            ///< 2D Pc at that TCA
   double miss_m = 0.0;        ///< |r2 - r1| at that TCA [m]
   double rel_speed_mps = 0.0; ///< |v2 - v1| [m/s]
+};
+
+/// The Pc pc_method_choice.hpp recommends for an encounter, and why.
+struct RecommendedPc {
+  double pc = 0.0;
+  std::string method = "2d";  ///< "2d", "3d_nc" or "mc"
+  std::string why;            ///< one line
 };
 
 /// The linear model of a burn's effect about a reference burn (see above).
@@ -66,6 +80,10 @@ class CamEncounter {
   EncounterOutcome outcome(const Vec3& dv_rtn_mps) const;
   /// The same propagation, returned as the linear model about dv_rtn_mps (its outcome too).
   CamLinearModel linearize(const Vec3& dv_rtn_mps, EncounterOutcome* at_ref = nullptr) const;
+  /// The recommended Pc without a burn (the escalation on assessment()).
+  RecommendedPc recommended_pc_before() const;
+  /// The recommended Pc after burn dv_rtn_mps (see above); throws as outcome() does.
+  RecommendedPc recommended_pc(const Vec3& dv_rtn_mps) const;
 
  private:
   struct Burned;

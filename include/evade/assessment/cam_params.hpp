@@ -14,6 +14,7 @@ struct CamConfig {
   int boundary_angles = 360;        ///< directions of the encounter-plane boundary sweep
   int max_relinearizations = 8;     ///< model re-linearizations about the burned trajectory
   double dv_tol_mps = 1e-6;         ///< convergence of the re-linearization [m/s]
+  int max_target_corrections = 6;   ///< re-plans when the recommended Pc misses pc_max
 };
 
 ParamTable<CamConfig> cam_params() noexcept;

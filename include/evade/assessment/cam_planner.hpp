@@ -29,6 +29,15 @@
 // Verification: the final burn's exact outcome (CamEncounter::outcome: two-body + J2
 // propagation of the burned primary and the secondary to the refined new TCA, covariances
 // propagated there, Pc recomputed).
+// Recommended Pc. The model above is the 2D Pc; whether a burn is needed and whether the
+// verified burn meets pc_max are decided by the recommended Pc (pc_method_choice.hpp: 2D
+// when its usage checks pass, else 3D-Nc, else Monte Carlo) before the burn and at the new
+// TCA (CamEncounter::recommended_pc). When the verified recommended Pc p_rec exceeds pc_max,
+// the 2D target is corrected by the ratio the verification measured,
+// target' = min(target, Pc_2D,verified) x pc_max (1 - cam.pc_margin) / p_rec,
+// and the burn planned again, at most cam.max_target_corrections times (the ratio of the two
+// methods varies slowly with the burn, so the correction converges in a few steps when the
+// methods agree on the direction of the gradient; when it does not, verified_ok says so).
 #pragma once
 
 #include <string>
@@ -47,7 +56,7 @@ struct CamRequest {
 };
 
 struct CamPlan {
-  bool maneuver_needed = true;     ///< false: Pc and miss already meet the request, dv = 0
+  bool maneuver_needed = true;     ///< false: recommended Pc and miss already meet it, dv = 0
   double lead_s = 0.0;
   double burn_from_epoch_s = 0.0;  ///< burn time minus the epoch of the given states [s]
   double tca_from_epoch_s = 0.0;   ///< unburned TCA minus the epoch of the given states [s]
@@ -59,8 +68,12 @@ struct CamPlan {
   EncounterOutcome before;         ///< no burn
   EncounterOutcome predicted;      ///< the last linear model at the final burn
   EncounterOutcome predicted_first;  ///< the model about the unburned trajectory, same burn
-  EncounterOutcome verified;       ///< exact propagation of the final burn
-  bool verified_ok = false;        ///< verified Pc <= pc_max and miss >= min_miss_m
+  EncounterOutcome verified;       ///< exact propagation of the final burn (2D Pc)
+  RecommendedPc before_recommended;    ///< no burn: the recommended Pc
+  RecommendedPc verified_recommended;  ///< the final burn: the recommended Pc at its TCA
+  bool verified_ok = false;        ///< verified recommended Pc <= pc_max and miss >= min_miss_m
+  int target_corrections = 0;      ///< re-plans with a corrected 2D target
+  double pc_target_2d = 0.0;       ///< the 2D target of the last plan
   int relinearizations = 0;        ///< linear models built
   double last_change_mps = 0.0;    ///< |burn change| at the last re-linearisation
   std::string search;              ///< how the burn was found

@@ -61,8 +61,8 @@ struct PlanCamResult {
   std::optional<std::int64_t> burn_unix_utime_us;
   std::vector<CamSweepRow> sweep;  ///< with a sweep request: one row per lead time
   /// The recommended Pc before the burn (pc_method_choice.hpp) and its method. The planner's
-  /// model is the 2D Pc; when the usage checks reject it (method not "2d") the plan's Pc
-  /// figures are 2D figures and the text output says so.
+  /// model is the 2D Pc; the need for a burn and its verification use the recommended Pc
+  /// (CamPlan::before_recommended, verified_recommended; cam_planner.hpp).
   double pc_before_recommended = 0.0;
   std::string pc_method_before = "2d";
   std::string pc_method_reason;
