@@ -17,6 +17,7 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   conjunction::apply_param_overrides(o.param_overrides, &req);
   req.start_utc = o.start_utc;
   req.threads = o.threads;
+  req.prefilter = !o.no_prefilter;
   req.cdm = screen_cdm_options(o.cdm);
   req.validate();
   req.catalog = read_catalog_file(o.tle_path, o.omm_path);

@@ -18,6 +18,7 @@ struct CatalogScreenOptions {
   std::vector<std::string> param_overrides;
   std::string start_utc;     ///< --start (empty: the latest element epoch)
   int threads = 0;           ///< 0: hardware concurrency
+  bool no_prefilter = false; ///< --no-prefilter: with --primary, propagate every object
   bool json = false;
   bool quiet = false;
   CdmOutOptions cdm;         ///< --cdm-out DIR ...: one CDM per event

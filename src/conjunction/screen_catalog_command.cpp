@@ -4,6 +4,8 @@
 // (default: the latest element epoch); positions are TEME (distances are frame-independent).
 #include <algorithm>
 #include <chrono>
+#include <limits>
+#include <optional>
 #include <cstdio>
 #include <stdexcept>
 #include <thread>
@@ -36,17 +38,32 @@ long primary_index(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
   throw std::invalid_argument("--primary " + std::to_string(req.primary_norad) + ": no such object in the catalog");
 }
 
-Sgp4Screening catalog_motion(const ScreenCatalogRequest& req) {
+// The start of the screen (UTC s since J2000): --start, else the latest element epoch of the
+// whole catalog (as sgp4_screening takes it), so that the prefilter does not move it.
+double screen_start_j2000_s(const ScreenCatalogRequest& req) {
+  if (!req.start_utc.empty()) return seconds_since_j2000_from_calendar(parse_calendar_utc(req.start_utc));
+  double start = -std::numeric_limits<double>::infinity();
+  for (const auto& m : req.catalog.objects) start = std::max(start, sgp4::epoch_seconds_since_j2000(m));
+  return req.catalog.objects.empty() ? 0.0 : start;
+}
+
+Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
+                             std::optional<PrimaryPrefilterCounts>* counts) {
   Sgp4MotionOptions mo;
   mo.span_s = req.span_s;
-  if (!req.start_utc.empty()) {
-    mo.start_at_latest_epoch = false;
-    mo.start_j2000_s = seconds_since_j2000_from_calendar(parse_calendar_utc(req.start_utc));
+  mo.start_at_latest_epoch = false;
+  mo.start_j2000_s = screen_start_j2000_s(req);
+  std::vector<sgp4::MeanElements> kept;
+  const bool filter = req.prefilter && req.primary_norad >= 0;
+  if (filter) {
+    counts->emplace();
+    kept = prefilter_primary(req.catalog.objects, req.primary_norad, mo.start_j2000_s,
+                             req.span_s, req.threshold_m, &**counts);
   }
-  Sgp4Screening s = sgp4_screening(req.catalog.objects, mo);
+  Sgp4Screening s = sgp4_screening(filter ? kept : req.catalog.objects, mo);
   if (req.diagnostic)
     for (const auto& r : s.rejected) req.diagnostic("evade screen: rejected: " + r.message() + "\n");
-  if (s.objects.size() < 2)
+  if (s.objects.size() < (filter ? 1u : 2u))  // the primary alone: nothing comes within D
     throw std::invalid_argument("fewer than two usable element sets (" + std::to_string(req.catalog.bad_entries) +
                                 " bad entries, " + std::to_string(s.rejected.size()) + " rejected)");
   return s;
@@ -137,13 +154,15 @@ void apply_param_overrides(const std::vector<std::string>& key_values, ScreenCat
 ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
   req.validate();
   const auto t0 = std::chrono::steady_clock::now();
-  const Sgp4Screening s = catalog_motion(req);
+  std::optional<PrimaryPrefilterCounts> prefilter;
+  const Sgp4Screening s = catalog_motion(req, &prefilter);
   const auto t1 = std::chrono::steady_clock::now();
   const ScreenOptions so = catalog_options(req, s);
   const ScreenResult r = screen_robust(s.objects, req.span_s, so);
   const auto t2 = std::chrono::steady_clock::now();
   if (req.progress) req.progress("\n");
   ScreenCatalogResult res = catalog_header(req, s, so);
+  res.prefilter = prefilter;
   res.stats = r.stats;
   res.motion_setup_wall_s = std::chrono::duration<double>(t1 - t0).count();
   res.screen_wall_s = std::chrono::duration<double>(t2 - t1).count();
@@ -170,6 +189,12 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
   j["rejected"] = static_cast<long>(r.rejections.size());
   j["rejections"] = r.rejections;
   if (r.primary_norad) j["primary"] = *r.primary_norad;
+  if (r.prefilter)
+    j["prefilter"] = {{"objects", r.prefilter->objects},
+                      {"removed_perigee_apogee", r.prefilter->removed_radius},
+                      {"kept_without_radius_bound", r.prefilter->unbounded},
+                      {"propagated", r.prefilter->kept},
+                      {"primary_radius_bounded", r.prefilter->primary_bounded}};
   j["stats"] = {{"grid_steps", r.stats.steps},
                 {"pairs_checked", r.stats.pairs_checked},
                 {"candidates", r.stats.candidates},

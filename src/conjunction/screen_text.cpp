@@ -68,6 +68,11 @@ std::string to_text(const ScreenCatalogResult& r) {
                          r.objects, static_cast<long>(r.rejections.size()), r.bad_entries,
                          utc_text_ms(r.start_j2000_s).c_str(), r.span_s, r.threshold_m, r.events.size(),
                          r.screen_wall_s);
+  if (r.prefilter)
+    s += format_text("  prefilter (perigee/apogee against the primary): %ld of %ld objects set aside, "
+                     "%ld kept without a radius bound, %ld propagated\n",
+                     r.prefilter->removed_radius, r.prefilter->objects, r.prefilter->unbounded,
+                     r.prefilter->kept);
   for (std::size_t k = 0; k < r.events.size(); ++k) {
     const CatalogEvent& e = r.events[k];
     s += format_text("  %-24s %-24s TCA %s  miss %12.3f m  v_rel %9.3f m/s%s\n", e.name_i.c_str(),

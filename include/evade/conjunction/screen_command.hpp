@@ -23,6 +23,7 @@
 
 #include "evade/assessment/screen_cdms.hpp"
 #include "evade/config/scenario.hpp"
+#include "evade/conjunction/primary_prefilter.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/screen_scenario.hpp"
@@ -115,6 +116,9 @@ struct ScreenCatalogRequest {
   double step_s = 0.0;            ///< grid step; 0: auto_step_s(N), else [1, 600]
   std::string start_utc;          ///< empty: the latest element epoch
   int threads = 0;                ///< 0: hardware concurrency
+  /// With a primary: set aside the objects that can never come within threshold_m of it
+  /// before propagating (primary_prefilter.hpp); false screens every object.
+  bool prefilter = true;
   assessment::ScreenCdmOptions cdm;
   ScreenTextSink progress;        ///< progress text; empty: none
   ScreenTextSink diagnostic;      ///< one line per rejected element set; empty: none
@@ -151,6 +155,7 @@ struct ScreenCatalogResult {
   long bad_entries = 0;
   std::vector<std::string> rejections;  ///< "NORAD id (NAME): reason"
   std::optional<long> primary_norad;
+  std::optional<PrimaryPrefilterCounts> prefilter;  ///< with a primary and the prefilter
   ScreenStats stats;
   int threads = 0;
   double grid_step_s = 0.0;

@@ -49,6 +49,13 @@ struct Sgp4Elements {
   double no_kozai_radpmin = 0.0;
 };
 
+/// Bounds of the distance from the Earth's centre over an interval of time.
+struct RadiusBounds {
+  bool bounded = false;   ///< false: no bound (deep space, or drag ending the orbit)
+  double min_m = 0.0;     ///< |r| >= min_m at every instant of the interval [m]
+  double max_m = 0.0;     ///< |r| <= max_m [m]
+};
+
 /// Converts catalog mean elements (degrees, rev/day) to the theory's units.
 Sgp4Elements sgp4_elements(const MeanElements& m) noexcept;
 
@@ -67,6 +74,10 @@ class Sgp4Propagator {
   Sgp4State propagate_min(double tsince_min) const noexcept;
   /// State at t_s seconds from the element epoch.
   Sgp4State propagate_s(double t_s) const noexcept { return propagate_min(t_s / 60.0); }
+  /// Bounds of |r| that propagate_min returns for every tsince in [t0_min, t1_min], from the
+  /// theory's own formulas (radius_bounds.cpp gives the argument); near-Earth only: a
+  /// deep-space element set, an init error or drag taking tempa to 0 gives bounded = false.
+  RadiusBounds radius_bounds(double t0_min, double t1_min) const noexcept;
 
  private:
   struct Short {
