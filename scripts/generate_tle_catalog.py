@@ -63,15 +63,27 @@ def orbit(rng, kind):
     return n, min(e, 0.9), min(inc, 180.0), min(bstar, 0.9)
 
 
+def catalog_field(catnum):
+    """The 5-column catalog number: digits below 100000, else Alpha-5 (A0000 = 100000; the
+    letters skip I and O), as Space-Track writes numbers up to 339999."""
+    if catnum < 100000:
+        return f"{catnum:05d}"
+    letters = "ABCDEFGHJKLMNPQRSTUVWXYZ"
+    head, tail = divmod(catnum, 10000)
+    if head - 10 >= len(letters):
+        raise SystemExit(f"catalog number {catnum} does not fit the Alpha-5 field")
+    return f"{letters[head - 10]}{tail:04d}"
+
+
 def tle(rng, catnum, kind, epoch_yy, epoch_day, launch):
     n, e, inc, bstar = orbit(rng, kind)
     ndot = bstar * 1e-3 * rng.uniform(0.5, 1.5) * (1 if rng.random() > 0.1 else -1)
     intl = f"{launch[0] % 100:02d}{launch[1]:03d}{launch[2]:<3}"
     day = epoch_day - rng.uniform(0.0, 3.0)
-    l1 = (f"1 {catnum:05d}U {intl:<8} {epoch_yy:02d}{day:012.8f} {ndot_field(ndot)} "
+    l1 = (f"1 {catalog_field(catnum)}U {intl:<8} {epoch_yy:02d}{day:012.8f} {ndot_field(ndot)} "
           f"{implied(0.0)} {implied(bstar)} 0 {rng.randint(1, 999):4d}")
     raan, argp, m = (rng.uniform(0, 360) for _ in range(3))
-    l2 = (f"2 {catnum:05d} {inc:8.4f} {raan:8.4f} {round(e * 1e7):07d} {argp:8.4f} {m:8.4f} "
+    l2 = (f"2 {catalog_field(catnum)} {inc:8.4f} {raan:8.4f} {round(e * 1e7):07d} {argp:8.4f} {m:8.4f} "
           f"{n:11.8f}{rng.randint(1, 99999):5d}")
     return l1 + str(checksum(l1)), l2 + str(checksum(l2))
 

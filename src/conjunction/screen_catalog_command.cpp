@@ -51,6 +51,7 @@ Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
                              std::optional<PrimaryPrefilterCounts>* counts) {
   Sgp4MotionOptions mo;
   mo.span_s = req.span_s;
+  mo.threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   mo.start_at_latest_epoch = false;
   mo.start_j2000_s = screen_start_j2000_s(req);
   std::vector<sgp4::MeanElements> kept;

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "evade/dynamics/gravity.hpp"
 #include "evade/sgp4/gravity_constants.hpp"
@@ -107,6 +108,7 @@ void Sgp4MotionOptions::validate_steps() const {
   if (!(velocity_step_s > 0.0 && velocity_step_s <= 1.0))
     fail("velocity_step_s", velocity_step_s, "(0, 1]");
   if (!(accel_step_s > 0.0 && accel_step_s <= 10.0)) fail("accel_step_s", accel_step_s, "(0, 10]");
+  if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
   if (samples_per_orbit < 8 || samples_per_orbit > 100000)
     fail("samples_per_orbit", samples_per_orbit, "[8, 100000]");
   if (max_samples < 2) fail("max_samples", static_cast<double>(max_samples), "[2, inf)");
@@ -163,13 +165,36 @@ struct Sgp4CatalogBuilder {
   static Sgp4Screening build(const std::vector<sgp4::MeanElements>& elements,
                              const Sgp4MotionOptions& opt);
   static std::string accept(Sgp4Motion& mo, const sgp4::MeanElements& m, double start_s,
-                            const Sgp4MotionOptions& opt, SpaceObject& obj);
+                            const Sgp4MotionOptions& opt, const Envelope& env, SpaceObject& obj);
 };
+
+// Each element set's perturbation envelope (the setup's cost, independent per object), on
+// opt.threads threads (object k on thread k mod threads); an element set that does not
+// initialise keeps an empty envelope (accept names its error).
+std::vector<Envelope> envelopes(const std::vector<sgp4::MeanElements>& elements, double start_s,
+                                const Sgp4MotionOptions& opt) {
+  std::vector<Envelope> env(elements.size());
+  const EarthModel earth = wgs72_earth();
+  const auto work = [&](std::size_t first, std::size_t stride) {
+    for (std::size_t k = first; k < elements.size(); k += stride) {
+      const sgp4::MeanElements& m = elements[k];
+      const sgp4::Sgp4Propagator prop(m, opt.mode);
+      if (prop.init_error() != sgp4::Sgp4Error::kNone || !(m.mean_motion_revpday > 0.0)) continue;
+      env[k] = sample_envelope(prop, start_s - sgp4::epoch_seconds_since_j2000(m), m, opt, earth);
+    }
+  };
+  const std::size_t threads = static_cast<std::size_t>(std::max(1, opt.threads));
+  std::vector<std::thread> pool;
+  for (std::size_t j = 1; j < threads; ++j) pool.emplace_back(work, j, threads);
+  work(0, threads);
+  for (std::thread& t : pool) t.join();
+  return env;
+}
 
 // Adds one element set to the motion, or returns why it is rejected.
 std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements& m,
                                        double start_s, const Sgp4MotionOptions& opt,
-                                       SpaceObject& obj) {
+                                       const Envelope& env, SpaceObject& obj) {
   const sgp4::Sgp4Propagator prop(m, opt.mode);
   if (prop.init_error() != sgp4::Sgp4Error::kNone) {
     return "SGP4 error " + std::to_string(static_cast<int>(prop.init_error())) + " (" +
@@ -178,7 +203,6 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   if (!(m.mean_motion_revpday > 0.0)) return "mean motion " + fmt(m.mean_motion_revpday) + " rev/day <= 0";
   const EarthModel earth = wgs72_earth();
   const double offset_s = start_s - sgp4::epoch_seconds_since_j2000(m);
-  const Envelope env = sample_envelope(prop, offset_s, m, opt, earth);
   if (!env.reason.empty()) return env.reason;
   mo.props_.push_back(prop);
   mo.offset_s_.push_back(offset_s);
@@ -234,9 +258,11 @@ Sgp4Screening Sgp4CatalogBuilder::build(const std::vector<sgp4::MeanElements>& e
   auto motion = std::make_shared<Sgp4Motion>();
   motion->velocity_step_s_ = opt.velocity_step_s;
   motion->accel_step_s_ = opt.accel_step_s;
-  for (const auto& m : elements) {
+  const std::vector<Envelope> env = envelopes(elements, out.start_j2000_s, opt);
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    const sgp4::MeanElements& m = elements[k];
     SpaceObject obj;
-    const std::string why = accept(*motion, m, out.start_j2000_s, opt, obj);
+    const std::string why = accept(*motion, m, out.start_j2000_s, opt, env[k], obj);
     if (!why.empty()) {
       out.rejected.push_back(RejectedElementSet{m.norad_id, m.name, why});
       continue;

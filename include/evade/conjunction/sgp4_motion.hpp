@@ -53,6 +53,7 @@ struct Sgp4MotionOptions {
   double envelope_factor = 2.0;   ///< accel_mps2 = factor x largest sample + floor
   double envelope_floor_mps2 = 5e-6;
   double object_size_m = 0.0;     ///< SpaceObject::size_m given to every object
+  int threads = 1;                ///< threads of the setup (the envelopes), >= 1
   /// Throws std::invalid_argument naming the field.
   void validate() const;
 
