@@ -194,6 +194,7 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
     j["prefilter"] = {{"objects", r.prefilter->objects},
                       {"removed_perigee_apogee", r.prefilter->removed_radius},
                       {"kept_without_radius_bound", r.prefilter->unbounded},
+                      {"deep_space_sampled", r.prefilter->sampled},
                       {"propagated", r.prefilter->kept},
                       {"primary_radius_bounded", r.prefilter->primary_bounded}};
   j["stats"] = {{"grid_steps", r.stats.steps},
