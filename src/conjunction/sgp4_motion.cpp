@@ -96,6 +96,7 @@ void Sgp4MotionOptions::validate() const {
   };
   if (!(span_s > 0.0) || !std::isfinite(span_s)) fail("span_s", span_s, "(0, inf)");
   if (!std::isfinite(start_j2000_s)) fail("start_j2000_s", start_j2000_s, "finite");
+  if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
   validate_steps();
 }
 
@@ -108,7 +109,6 @@ void Sgp4MotionOptions::validate_steps() const {
   if (!(velocity_step_s > 0.0 && velocity_step_s <= 1.0))
     fail("velocity_step_s", velocity_step_s, "(0, 1]");
   if (!(accel_step_s > 0.0 && accel_step_s <= 10.0)) fail("accel_step_s", accel_step_s, "(0, 10]");
-  if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
   if (samples_per_orbit < 8 || samples_per_orbit > 100000)
     fail("samples_per_orbit", samples_per_orbit, "[8, 100000]");
   if (max_samples < 2) fail("max_samples", static_cast<double>(max_samples), "[2, inf)");
