@@ -1,12 +1,15 @@
 // `evade screen --tle FILE | --omm FILE [--primary ID] [--span-s S] [--threshold-m D]
 // [--step-s H] [--start UTC] [--threads N] [--json]`: reads the file (the only input I/O),
-// screens it by conjunction::run_screen_catalog and prints its JSON or text.
+// screens it by conjunction::run_screen_catalog and prints its JSON or text. Under
+// `mpirun -np N` the grid steps are split between the ranks (distributed_screen.hpp) and
+// rank 0 prints the merged result.
 #include "cmd_screen_catalog.hpp"
 
 #include <cstdio>
 
 #include "cli.hpp"
 #include "evade/conjunction/screen_command.hpp"
+#include "evade/distributed/distributed_screen.hpp"
 
 namespace evade::cli {
 
@@ -21,12 +24,20 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   req.cdm = screen_cdm_options(o.cdm);
   req.validate();
   req.catalog = read_catalog_file(o.tle_path, o.omm_path);
+  const distributed::MpiSession mpi;  // one process unless started by mpirun
+  const bool lead = mpi.rank() == 0;  // rank 0 reports, prints and writes
   for (const auto& is : req.catalog.issues)
-    (void)std::fprintf(stderr, "evade screen: bad entry: %s\n", is.message().c_str());
+    if (lead) (void)std::fprintf(stderr, "evade screen: bad entry: %s\n", is.message().c_str());
   auto to_stderr = [](const std::string& s) { (void)std::fputs(s.c_str(), stderr); };
-  req.diagnostic = to_stderr;
-  if (!o.quiet) req.progress = to_stderr;
+  if (lead) req.diagnostic = to_stderr;
+  if (!o.quiet && lead) req.progress = to_stderr;
+  req.ranks = mpi.size();
+  req.robust_screener = [&mpi](const std::vector<conjunction::SpaceObject>& objects, double span_s,
+                               const conjunction::ScreenOptions& so) {
+    return distributed::screen_distributed(objects, span_s, so, mpi);
+  };
   const conjunction::ScreenCatalogResult r = conjunction::run_screen_catalog(req);
+  if (!lead) return 0;  // rank 0 holds the merged result
   if (r.cdm) write_cdm_files(*r.cdm);
   if (o.json) print_json(to_json(r));
   else (void)std::fputs(to_text(r).c_str(), stdout);

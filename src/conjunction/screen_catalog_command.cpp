@@ -114,6 +114,7 @@ ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const Sgp4Sc
   for (const auto& rj : s.rejected) res.rejections.push_back(rj.message());
   if (so.primary >= 0) res.primary_norad = req.primary_norad;
   res.threads = so.threads;
+  res.ranks = req.ranks;
   res.grid_step_s = so.step_s > 0.0 ? so.step_s : auto_step_s(s.objects.size());
   return res;
 }
@@ -159,7 +160,8 @@ ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
   const Sgp4Screening s = catalog_motion(req, &prefilter);
   const auto t1 = std::chrono::steady_clock::now();
   const ScreenOptions so = catalog_options(req, s);
-  const ScreenResult r = screen_robust(s.objects, req.span_s, so);
+  const ScreenResult r = req.robust_screener ? req.robust_screener(s.objects, req.span_s, so)
+                                              : screen_robust(s.objects, req.span_s, so);
   const auto t2 = std::chrono::steady_clock::now();
   if (req.progress) req.progress("\n");
   ScreenCatalogResult res = catalog_header(req, s, so);
@@ -204,6 +206,7 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
                 {"root_solves", r.stats.root_solves},
                 {"unproven_leaves", r.stats.unproven_leaves},
                 {"threads", r.threads},
+                {"ranks", r.ranks},
                 {"grid_step_s", r.grid_step_s}};
   j["motion_setup_wall_s"] = r.motion_setup_wall_s;
   j["screen_wall_s"] = r.screen_wall_s;

@@ -119,6 +119,8 @@ struct ScreenCatalogRequest {
   /// With a primary: set aside the objects that can never come within threshold_m of it
   /// before propagating (primary_prefilter.hpp); false screens every object.
   bool prefilter = true;
+  int ranks = 1;                  ///< MPI ranks of robust_screener (echoed in stats)
+  RobustScreener robust_screener; ///< empty: screen_robust in this process
   assessment::ScreenCdmOptions cdm;
   ScreenTextSink progress;        ///< progress text; empty: none
   ScreenTextSink diagnostic;      ///< one line per rejected element set; empty: none
@@ -158,6 +160,7 @@ struct ScreenCatalogResult {
   std::optional<PrimaryPrefilterCounts> prefilter;  ///< with a primary and the prefilter
   ScreenStats stats;
   int threads = 0;
+  int ranks = 1;
   double grid_step_s = 0.0;
   double motion_setup_wall_s = 0.0;
   double screen_wall_s = 0.0;
