@@ -28,6 +28,7 @@ assessment::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
   c.cov_rtn_sigma_text = o.cov_sigma;
   if (!o.cov_sigma.empty()) c.cov_rtn_sigma_m = parse_number_list(o.cov_sigma, ',');
   c.hbr_m = o.hbr_m;
+  c.sink = [](const assessment::ScreenCdmFile& m) { write_cdm_file(m); };  // as each is made
   return c;
 }
 
@@ -44,13 +45,16 @@ void create_cdm_dir(const std::string& dir) {
   std::filesystem::remove(probe, ec);
 }
 
+void write_cdm_file(const assessment::ScreenCdmFile& m) {
+  std::ofstream f(m.path);
+  f << m.text;
+  f.close();
+  if (!f) throw std::runtime_error("--cdm-out: cannot write '" + m.path + "'");
+}
+
 void write_cdm_files(const assessment::ScreenCdms& cdms) {
-  for (const auto& m : cdms.files) {
-    std::ofstream f(m.path);
-    f << m.text;
-    f.close();
-    if (!f) throw std::runtime_error("--cdm-out: cannot write '" + m.path + "'");
-  }
+  for (const auto& m : cdms.files)
+    if (!m.text.empty()) write_cdm_file(m);  // the sink wrote the others as they were made
   if (!cdms.files.empty())
     (void)std::fprintf(stderr, "evade screen: wrote %zu CDMs (%s) to %s\n", cdms.files.size(),
                        cdms.format.c_str(), cdms.dir.c_str());

@@ -108,7 +108,12 @@ ScreenCdms screen_event_cdms(const ScreenCdmOptions& o, const ScreenCdmRun& run,
   std::set<std::string> used;
   for (ScreeningEvent& ev : events) {
     complete_event(o, run, cov, ev);
-    out.files.push_back(one_message(o, ev, cov.has_value(), base, used));
+    ScreenCdmFile f = one_message(o, ev, cov.has_value(), base, used);
+    if (o.sink) {
+      o.sink(f);
+      f.text.clear();  // written: memory does not grow with the messages' text
+    }
+    out.files.push_back(std::move(f));
   }
   return out;
 }

@@ -12,6 +12,8 @@
 // The messages are built here and returned as text; writing the files is the caller's.
 #pragma once
 
+#include <functional>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +25,8 @@
 
 namespace evade::assessment {
 
+struct ScreenCdmFile;
+
 struct ScreenCdmOptions {
   std::string dir;                       ///< output directory (empty: no CDMs)
   std::string format = "kvn";            ///< kvn | xml
@@ -30,6 +34,9 @@ struct ScreenCdmOptions {
   std::vector<double> cov_rtn_sigma_m;   ///< its numbers (empty when it is not a number list)
   double hbr_m = 0.0;                    ///< hard-body radius [m]; 0: the objects' radii
   std::optional<double> creation_utc_j2000_s;  ///< CREATION_DATE; empty: the clock now
+  /// When set, each message goes here as soon as it is made (the CLI writes its file) and
+  /// its text is not kept in the result (ScreenCdmFile::text empty).
+  std::function<void(const ScreenCdmFile&)> sink;
 };
 
 /// diag(R^2, T^2, N^2) position block, velocity block 0 (RTN) [m^2]; empty without sigmas.
