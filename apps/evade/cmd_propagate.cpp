@@ -76,7 +76,7 @@ void add_catalog_options(CLI::App& app, CatalogFlags& c) {
   app.add_option("--step-s", c.request.step_s, "with --tle/--omm: output step [s]");
   app.add_option("--frame", c.request.frame, "with --tle/--omm: teme or eci (J2000)");
   app.add_flag("--csv", c.csv, "with --tle/--omm: one CSV row per state instead of the text summary");
-  app.add_option("--threads", c.threads, "with --tle/--omm: worker threads (0: one per core)")
+  app.add_option("--threads", c.threads, "with --tle/--omm: worker threads (0: one per core) [-]")
       ->check(CLI::Range(0, 256));
 }
 
