@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -249,12 +248,7 @@ Sgp4Screening Sgp4CatalogBuilder::build(const std::vector<sgp4::MeanElements>& e
   opt.validate();
   Sgp4Screening out;
   out.start_j2000_s = opt.start_j2000_s;
-  if (opt.start_at_latest_epoch) {
-    out.start_j2000_s = -std::numeric_limits<double>::infinity();
-    for (const auto& m : elements)
-      out.start_j2000_s = std::max(out.start_j2000_s, sgp4::epoch_seconds_since_j2000(m));
-    if (elements.empty()) out.start_j2000_s = 0.0;
-  }
+  if (opt.start_at_latest_epoch) out.start_j2000_s = sgp4::latest_epoch_seconds_since_j2000(elements);
   auto motion = std::make_shared<Sgp4Motion>();
   motion->velocity_step_s_ = opt.velocity_step_s;
   motion->accel_step_s_ = opt.accel_step_s;

@@ -2,7 +2,9 @@
 // Algorithm 14 "JD from a Gregorian date", here for 0 January of the epoch year).
 #include "evade/sgp4/mean_elements.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace evade::sgp4 {
 
@@ -25,6 +27,13 @@ SplitJulianDate epoch_julian_date(const MeanElements& m) noexcept {
 double epoch_seconds_since_j2000(const MeanElements& m) noexcept {
   const SplitJulianDate j = epoch_julian_date(m);
   return ((j.day - 2451545.0) + j.fraction) * 86400.0;
+}
+
+double latest_epoch_seconds_since_j2000(const std::vector<MeanElements>& elements) noexcept {
+  if (elements.empty()) return 0.0;
+  double latest = -std::numeric_limits<double>::infinity();
+  for (const MeanElements& m : elements) latest = std::max(latest, epoch_seconds_since_j2000(m));
+  return latest;
 }
 
 }  // namespace evade::sgp4

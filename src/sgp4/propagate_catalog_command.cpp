@@ -12,15 +12,13 @@
 #include "evade/core/epoch.hpp"
 #include "evade/sgp4/teme_to_j2000.hpp"
 
+#include "catalog_instants.hpp"
+
 namespace evade::sgp4 {
 namespace {
 
 constexpr double kMaxSpanS = 366.0 * 86400.0;  // one year of SGP4 is already far past its use
 constexpr double kMaxStepsPerObject = 100000.0;
-
-std::string utc_text(double j2000_s) {
-  return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s));
-}
 
 CatalogTrack propagate_object(const MeanElements& m, double start_j2000_s,
                               const PropagateCatalogRequest& req, bool j2000) {
@@ -30,17 +28,15 @@ CatalogTrack propagate_object(const MeanElements& m, double start_j2000_s,
   track.epoch_j2000_s = epoch_seconds_since_j2000(m);
   const Sgp4Propagator prop(m, OperationMode::kImproved);
   const double offset_s = start_j2000_s - track.epoch_j2000_s;
-  const long n = static_cast<long>(req.span_s / req.step_s + 1e-9);
-  for (long k = 0; k <= n; ++k) {
-    const double t_s = std::min(static_cast<double>(k) * req.step_s, req.span_s);
-    const Sgp4State s = prop.propagate_s(offset_s + t_s);
-    if (s.error != Sgp4Error::kNone) {
-      track.error = s.error;
+  for (long k = 0; k <= detail::last_instant(req); ++k) {
+    const double t_s = detail::instant_s(req, k);
+    CatalogState out;
+    const Sgp4Error e = detail::catalog_state(prop, offset_s, start_j2000_s, t_s, j2000, &out);
+    if (e != Sgp4Error::kNone) {
+      track.error = e;
       track.error_t_s = t_s;
       break;
     }
-    CatalogState out{t_s, s.r_teme_m, s.v_teme_mps};
-    if (j2000) teme_to_j2000(start_j2000_s + t_s, s.r_teme_m, s.v_teme_mps, out.r_m, out.v_mps);
     track.states.push_back(out);
   }
   return track;
@@ -50,7 +46,7 @@ nlohmann::json track_json(const CatalogTrack& t) {
   nlohmann::json obj;
   obj["id"] = t.id;
   obj["name"] = t.name;
-  obj["epoch_utc"] = utc_text(t.epoch_j2000_s);
+  obj["epoch_utc"] = detail::utc_text(t.epoch_j2000_s);
   nlohmann::json states = nlohmann::json::array();
   for (const CatalogState& s : t.states) {
     states.push_back({{"t_s", s.t_s}, {"r_m", config::vec_json(s.r_m)},
@@ -79,29 +75,55 @@ void check_propagate_catalog_request(const PropagateCatalogRequest& req) {
 }
 
 PropagateCatalogResult run_propagate_catalog(const PropagateCatalogRequest& req) {
+  PropagateCatalogResult r = detail::catalog_result_header(req);
+  r.objects.reserve(req.catalog.objects.size());
+  for (const auto& m : req.catalog.objects)
+    r.objects.push_back(propagate_object(m, r.start_j2000_s, req, r.j2000));
+  return r;
+}
+
+namespace detail {
+
+PropagateCatalogResult catalog_result_header(const PropagateCatalogRequest& req) {
   check_propagate_catalog_request(req);
   const Catalog& cat = req.catalog;
   if (cat.objects.empty())
     throw std::invalid_argument("no valid element set in the file (" +
                                 std::to_string(cat.bad_entries) + " bad entries)");
   PropagateCatalogResult r;
-  r.start_j2000_s = epoch_seconds_since_j2000(cat.objects[0]);
-  for (const auto& m : cat.objects) {
-    r.start_j2000_s = std::max(r.start_j2000_s, epoch_seconds_since_j2000(m));
-  }
+  r.start_j2000_s = latest_epoch_seconds_since_j2000(cat.objects);
   r.j2000 = req.frame == "eci";
   r.bad_entries = cat.bad_entries;
   for (const auto& is : cat.issues) r.issues.push_back(is.message());
-  r.objects.reserve(cat.objects.size());
-  for (const auto& m : cat.objects) {
-    r.objects.push_back(propagate_object(m, r.start_j2000_s, req, r.j2000));
-  }
   return r;
 }
 
+long last_instant(const PropagateCatalogRequest& req) {
+  return static_cast<long>(req.span_s / req.step_s + 1e-9);
+}
+
+double instant_s(const PropagateCatalogRequest& req, long k) {
+  return std::min(static_cast<double>(k) * req.step_s, req.span_s);
+}
+
+Sgp4Error catalog_state(const Sgp4Propagator& p, double offset_s, double start_j2000_s,
+                        double t_s, bool j2000, CatalogState* out) {
+  const Sgp4State s = p.propagate_s(offset_s + t_s);
+  if (s.error != Sgp4Error::kNone) return s.error;
+  *out = {t_s, s.r_teme_m, s.v_teme_mps};
+  if (j2000) teme_to_j2000(start_j2000_s + t_s, s.r_teme_m, s.v_teme_mps, out->r_m, out->v_mps);
+  return Sgp4Error::kNone;
+}
+
+std::string utc_text(double j2000_s) {
+  return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s));
+}
+
+}  // namespace detail
+
 nlohmann::json to_json(const PropagateCatalogResult& r) {
   nlohmann::json j;
-  j["start_utc"] = utc_text(r.start_j2000_s);
+  j["start_utc"] = detail::utc_text(r.start_j2000_s);
   j["frame"] = r.j2000 ? "J2000" : "TEME";
   j["bad_entries"] = r.bad_entries;
   j["issues"] = nlohmann::json::array();
@@ -109,32 +131,6 @@ nlohmann::json to_json(const PropagateCatalogResult& r) {
   j["objects"] = nlohmann::json::array();
   for (const auto& t : r.objects) j["objects"].push_back(track_json(t));
   return j;
-}
-
-std::string to_text(const PropagateCatalogResult& r) {
-  char buf[512];
-  // Fixed formats of finite numbers and bounded names (%.*s): the counts are not needed.
-  (void)std::snprintf(buf, sizeof buf,
-                      "evade propagate: %zu objects (%d bad entries), frame %s, from %s UTC\n",
-                      r.objects.size(), r.bad_entries, r.j2000 ? "J2000" : "TEME",
-                      utc_text(r.start_j2000_s).c_str());
-  std::string text = buf;
-  for (const CatalogTrack& t : r.objects) {
-    (void)std::snprintf(buf, sizeof buf, "  %6ld %-24.200s %zu states", t.id, t.name.c_str(),
-                        t.states.size());
-    text += buf;
-    if (!t.states.empty()) {
-      const CatalogState& last = t.states.back();
-      (void)std::snprintf(buf, sizeof buf, ", at t = %.0f s r_m = [%.1f, %.1f, %.1f]", last.t_s,
-                          last.r_m.x(), last.r_m.y(), last.r_m.z());
-      text += buf;
-    }
-    if (t.error != Sgp4Error::kNone) {
-      text += std::string(" (stopped: ") + sgp4_error_text(t.error) + ")";
-    }
-    text += "\n";
-  }
-  return text;
 }
 
 }  // namespace evade::sgp4

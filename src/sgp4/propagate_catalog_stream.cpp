@@ -5,11 +5,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <stdexcept>
 #include <thread>
 
-#include "evade/core/epoch.hpp"
-#include "evade/sgp4/teme_to_j2000.hpp"
+#include "catalog_instants.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -32,7 +30,7 @@ struct Plan {
   double start_j2000_s = 0.0;
   bool j2000 = false;
   StateFormat format = StateFormat::kNone;
-  long last_k = 0;  ///< instants 0..last_k
+  long last_k = 0;  ///< instants 0..last_k (detail::last_instant)
 };
 
 void append(std::string& s, double x) {
@@ -74,23 +72,18 @@ void run_task(const Plan& p, const Task& t, TaskOut* out) {
   const Sgp4Propagator prop(m, OperationMode::kImproved);
   const double offset_s = p.start_j2000_s - epoch_seconds_since_j2000(m);
   for (long k = t.k0; k < t.k1; ++k) {
-    const double t_s = std::min(static_cast<double>(k) * p.req->step_s, p.req->span_s);
-    const Sgp4State s = prop.propagate_s(offset_s + t_s);
-    if (s.error != Sgp4Error::kNone) {
-      out->error = s.error;
+    const double t_s = detail::instant_s(*p.req, k);
+    CatalogState st;
+    const Sgp4Error e = detail::catalog_state(prop, offset_s, p.start_j2000_s, t_s, p.j2000, &st);
+    if (e != Sgp4Error::kNone) {
+      out->error = e;
       out->error_t_s = t_s;
       return;
     }
-    CatalogState st{t_s, s.r_teme_m, s.v_teme_mps};
-    if (p.j2000) teme_to_j2000(p.start_j2000_s + t_s, s.r_teme_m, s.v_teme_mps, st.r_m, st.v_mps);
     if (p.format != StateFormat::kNone) append_state(out->bytes, m.norad_id, k, st, p.format);
     out->last = st;
     ++out->states;
   }
-}
-
-std::string utc_text(double j2000_s) {
-  return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s));
 }
 
 // A JSON string literal (names come from catalog files: escape what JSON requires).
@@ -112,12 +105,12 @@ std::string json_head(const StreamedCatalog& r) {
                   (r.j2000 ? "\"J2000\"" : "\"TEME\"") + ",\"issues\":[";
   for (std::size_t i = 0; i < r.issues.size(); ++i)
     s += (i ? "," : "") + json_string(r.issues[i]);
-  return s + "],\"start_utc\":" + json_string(utc_text(r.start_j2000_s)) + ",\"objects\":[";
+  return s + "],\"start_utc\":" + json_string(detail::utc_text(r.start_j2000_s)) + ",\"objects\":[";
 }
 
 std::string json_object_head(const StreamedTrack& t, bool first) {
   std::string s = first ? "\n" : ",\n";
-  s += "{\"epoch_utc\":" + json_string(utc_text(t.epoch_j2000_s)) + ",\"id\":";
+  s += "{\"epoch_utc\":" + json_string(detail::utc_text(t.epoch_j2000_s)) + ",\"id\":";
   append(s, t.id);
   return s + ",\"name\":" + json_string(t.name) + ",\"states\":[";
 }
@@ -192,22 +185,18 @@ void write_task(const Plan& p, const Task& t, const TaskOut& o, StreamedCatalog*
 }
 
 StreamedCatalog summary_of(const PropagateCatalogRequest& req) {
-  check_propagate_catalog_request(req);
-  const Catalog& cat = req.catalog;
-  if (cat.objects.empty())
-    throw std::invalid_argument("no valid element set in the file (" +
-                                std::to_string(cat.bad_entries) + " bad entries)");
+  const PropagateCatalogResult h = detail::catalog_result_header(req);
   StreamedCatalog r;
-  r.start_j2000_s = epoch_seconds_since_j2000(cat.objects[0]);
-  for (const auto& m : cat.objects) r.start_j2000_s = std::max(r.start_j2000_s, epoch_seconds_since_j2000(m));
-  r.j2000 = req.frame == "eci";
-  r.bad_entries = cat.bad_entries;
-  for (const auto& is : cat.issues) r.issues.push_back(is.message());
-  r.objects.resize(cat.objects.size());
-  for (std::size_t i = 0; i < cat.objects.size(); ++i) {
-    r.objects[i].id = cat.objects[i].norad_id;
-    r.objects[i].name = cat.objects[i].name;
-    r.objects[i].epoch_j2000_s = epoch_seconds_since_j2000(cat.objects[i]);
+  r.start_j2000_s = h.start_j2000_s;
+  r.j2000 = h.j2000;
+  r.bad_entries = h.bad_entries;
+  r.issues = h.issues;
+  r.objects.resize(req.catalog.objects.size());
+  for (std::size_t i = 0; i < r.objects.size(); ++i) {
+    const MeanElements& m = req.catalog.objects[i];
+    r.objects[i].id = m.norad_id;
+    r.objects[i].name = m.name;
+    r.objects[i].epoch_j2000_s = epoch_seconds_since_j2000(m);
   }
   return r;
 }
@@ -218,8 +207,7 @@ StreamedCatalog stream_propagate_catalog(const PropagateCatalogRequest& req, Sta
                                          int threads, const ByteSink& sink) {
   StreamedCatalog r = summary_of(req);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const Plan p{&req, r.start_j2000_s, r.j2000, format,
-               static_cast<long>(req.span_s / req.step_s + 1e-9)};
+  const Plan p{&req, r.start_j2000_s, r.j2000, format, detail::last_instant(req)};
   const std::string head = format == StateFormat::kJson  ? json_head(r)
                            : format == StateFormat::kCsv ? csv_head(r.j2000)
                                                          : std::string();
@@ -249,7 +237,7 @@ std::string to_text(const StreamedCatalog& r) {
   (void)std::snprintf(buf, sizeof buf,
                       "evade propagate: %zu objects (%d bad entries), frame %s, from %s UTC\n",
                       r.objects.size(), r.bad_entries, r.j2000 ? "J2000" : "TEME",
-                      utc_text(r.start_j2000_s).c_str());
+                      detail::utc_text(r.start_j2000_s).c_str());
   std::string text = buf;
   for (const StreamedTrack& t : r.objects) {
     (void)std::snprintf(buf, sizeof buf, "  %6ld %-24.200s %ld states", t.id, t.name.c_str(),

@@ -1,12 +1,12 @@
 // `evade propagate --tle/--omm` as a library call: Vallado et al. 2006 ("Revisiting
 // Spacetrack Report #3") verification object 00005 at its epoch, the span/step/frame checks,
-// and the JSON keys the CLI prints.
+// the JSON keys the CLI prints, and the text summary.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 
-#include "evade/sgp4/propagate_catalog_command.hpp"
+#include "evade/sgp4/propagate_catalog_stream.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -41,11 +41,13 @@ TEST(PropagateCatalogCommand, Object00005AtEpochMatchesThePublishedState) {
   EXPECT_NEAR(t.states[0].v_mps.y(), 6405.893759, 1e-5);
   EXPECT_NEAR(t.states[0].v_mps.z(), 4534.807250, 1e-5);
   EXPECT_EQ(t.error, Sgp4Error::kNone);
-  const std::string text = to_text(r);
+  const std::string text = to_text(stream_propagate_catalog(
+      request(720.0, 360.0, "teme"), StateFormat::kNone, 1, [](const char*, std::size_t) {}));
   EXPECT_NE(text.find("1 objects (0 bad entries), frame TEME, from 2000-06-27 18:50:19"),
             std::string::npos)
       << text;
   EXPECT_NE(text.find(" UTC\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("3 states, at t = 720 s"), std::string::npos) << text;
 }
 
 TEST(PropagateCatalogCommand, J2000FrameRotatesTheSameStates) {

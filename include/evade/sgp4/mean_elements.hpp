@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace evade::sgp4 {
 
@@ -37,6 +38,10 @@ SplitJulianDate epoch_julian_date(const MeanElements& m) noexcept;
 
 /// Seconds since J2000 (2000-01-01 12:00:00 UTC, 86 400 s days, the project's convention).
 double epoch_seconds_since_j2000(const MeanElements& m) noexcept;
+
+/// The latest element epoch of a catalog, seconds since J2000 (0 for an empty one): the
+/// start of every catalog propagation and screening unless another is given.
+double latest_epoch_seconds_since_j2000(const std::vector<MeanElements>& elements) noexcept;
 
 /// Julian date of 0 January 00:00 UTC of a Gregorian year (1900..2099).
 double julian_date_jan0(int year) noexcept;

@@ -56,9 +56,8 @@ struct PropagateCatalogResult {
 /// entries)").
 PropagateCatalogResult run_propagate_catalog(const PropagateCatalogRequest& req);
 
-/// The JSON `evade propagate --tle/--omm --json` prints.
+/// The JSON document of the result: the one `evade propagate --tle/--omm --json` streams
+/// (propagate_catalog_stream.hpp, which also gives the text form).
 nlohmann::json to_json(const PropagateCatalogResult& r);
-/// The text `evade propagate --tle/--omm` prints: one line per object with its last state.
-std::string to_text(const PropagateCatalogResult& r);
 
 }  // namespace evade::sgp4
