@@ -31,8 +31,8 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   auto to_stderr = [](const std::string& s) { (void)std::fputs(s.c_str(), stderr); };
   if (lead) req.diagnostic = to_stderr;
   if (!o.quiet && lead) req.progress = to_stderr;
-  if (!lead) req.cdm = {};  // the other ranks hold only their part of the events
   req.ranks = mpi.size();
+  req.rank = mpi.rank();
   req.robust_screener = [&mpi](const std::vector<conjunction::SpaceObject>& objects, double span_s,
                                const conjunction::ScreenOptions& so) {
     return distributed::screen_distributed(objects, span_s, so, mpi);

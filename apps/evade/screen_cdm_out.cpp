@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+
+#include <unistd.h>
 
 #include "number_list.hpp"
 
@@ -39,7 +42,9 @@ void create_cdm_dir(const std::string& dir) {
   if (ec || !std::filesystem::is_directory(dir))
     throw std::invalid_argument("--cdm-out: cannot create directory '" + dir + "': " +
                                 (ec ? ec.message() : std::string("not a directory")));
-  const std::filesystem::path probe = std::filesystem::path(dir) / ".evade-write-test";
+  // One probe per process: MPI ranks check the same directory at the same time.
+  const std::filesystem::path probe =
+      std::filesystem::path(dir) / (".evade-write-test-" + std::to_string(::getpid()));
   std::ofstream(probe.string()) << "";
   if (!std::filesystem::exists(probe)) throw std::invalid_argument("--cdm-out: cannot write into '" + dir + "'");
   std::filesystem::remove(probe, ec);

@@ -4,7 +4,6 @@
 // (default: the latest element epoch); positions are TEME (distances are frame-independent).
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <optional>
 #include <cstdio>
 #include <stdexcept>
@@ -42,9 +41,7 @@ long primary_index(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
 // whole catalog (as sgp4_screening takes it), so that the prefilter does not move it.
 double screen_start_j2000_s(const ScreenCatalogRequest& req) {
   if (!req.start_utc.empty()) return seconds_since_j2000_from_calendar(parse_calendar_utc(req.start_utc));
-  double start = -std::numeric_limits<double>::infinity();
-  for (const auto& m : req.catalog.objects) start = std::max(start, sgp4::epoch_seconds_since_j2000(m));
-  return req.catalog.objects.empty() ? 0.0 : start;
+  return sgp4::latest_epoch_seconds_since_j2000(req.catalog.objects);
 }
 
 Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
@@ -170,7 +167,7 @@ ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
   res.motion_setup_wall_s = std::chrono::duration<double>(t1 - t0).count();
   res.screen_wall_s = std::chrono::duration<double>(t2 - t1).count();
   res.events = catalog_events(r, s);
-  if (!req.cdm.dir.empty()) {
+  if (!req.cdm.dir.empty() && req.rank == 0) {  // the other ranks hold only their part
     const assessment::ScreenCdmRun run{s.start_j2000_s, req.span_s, req.threshold_m, "catalog " + req.source};
     res.cdm = assessment::screen_event_cdms(req.cdm, run,
                                             catalog_screening_events(r.events, s, req.catalog.objects, so));

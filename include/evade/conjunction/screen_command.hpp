@@ -120,6 +120,7 @@ struct ScreenCatalogRequest {
   /// before propagating (primary_prefilter.hpp); false screens every object.
   bool prefilter = true;
   int ranks = 1;                  ///< MPI ranks of robust_screener (echoed in stats)
+  int rank = 0;                   ///< this process's rank: only rank 0 builds the CDMs
   RobustScreener robust_screener; ///< empty: screen_robust in this process
   assessment::ScreenCdmOptions cdm;
   ScreenTextSink progress;        ///< progress text; empty: none
