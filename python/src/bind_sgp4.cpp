@@ -1,0 +1,99 @@
+// Bindings of the SGP4 catalog calls: read a catalog (TLE/3LE, OMM KVN/XML, GP JSON/CSV;
+// sgp4/catalog.hpp) and propagate N objects x T instants into numpy arrays
+// (sgp4/propagate_grid.hpp), with the GIL released while SGP4 runs.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include "bind_common.hpp"
+#include "evade/core/epoch.hpp"
+#include "evade/sgp4/catalog.hpp"
+#include "evade/sgp4/mean_elements.hpp"
+#include "evade/sgp4/propagate_grid.hpp"
+#include "evade/sgp4/sgp4.hpp"
+
+namespace evade::python {
+namespace {
+
+using sgp4::Catalog;
+
+std::vector<std::string> issue_messages(const Catalog& c) {
+  std::vector<std::string> out;
+  for (const sgp4::ReadIssue& is : c.issues) out.push_back(is.message());
+  return out;
+}
+
+NumpyArray<std::int64_t> catalog_ids(const Catalog& c) {
+  std::vector<std::int64_t> ids;
+  for (const sgp4::MeanElements& m : c.objects) ids.push_back(m.norad_id);
+  return numpy_from_vector(std::move(ids), {c.objects.size()});
+}
+
+NumpyArray<double> catalog_epochs(const Catalog& c) {
+  std::vector<double> t;
+  for (const sgp4::MeanElements& m : c.objects) t.push_back(sgp4::epoch_seconds_since_j2000(m));
+  return numpy_from_vector(std::move(t), {c.objects.size()});
+}
+
+std::vector<std::string> catalog_names(const Catalog& c) {
+  std::vector<std::string> out;
+  for (const sgp4::MeanElements& m : c.objects) out.push_back(m.name);
+  return out;
+}
+
+using TimesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+nb::tuple propagate(const Catalog& c, const std::string& start_utc, TimesIn t_s,
+                    const std::string& frame, int threads) {
+  sgp4::StateGridRequest req;
+  req.start_j2000_s = sgp4::start_j2000_s_from_utc(start_utc, c);
+  req.t_s = t_s.data();
+  req.n_times = t_s.shape(0);
+  req.j2000 = sgp4::frame_is_j2000(frame);
+  req.threads = threads;
+  sgp4::check_state_grid_request(c, req);
+  const std::size_t n = c.objects.size(), states = n * req.n_times;
+  std::vector<double> r(3 * states), v(3 * states);
+  std::vector<std::int32_t> err(states);
+  {
+    nb::gil_scoped_release unlocked;
+    sgp4::propagate_grid(c, req, {r.data(), v.data(), err.data()});
+  }
+  return nb::make_tuple(req.start_j2000_s, numpy_from_vector(std::move(r), {n, req.n_times, 3}),
+                        numpy_from_vector(std::move(v), {n, req.n_times, 3}),
+                        numpy_from_vector(std::move(err), {n, req.n_times}));
+}
+
+}  // namespace
+
+void bind_sgp4(nb::module_& m) {
+  nb::class_<Catalog>(m, "Catalog", "Element sets read from a catalog text (rejected entries named).")
+      .def("__len__", [](const Catalog& c) { return c.objects.size(); })
+      .def_prop_ro("ids", &catalog_ids, nb::rv_policy::move, "NORAD catalog numbers, in catalog order")
+      .def_prop_ro("names", &catalog_names, "object names (empty when the format has none)")
+      .def_prop_ro("epochs_j2000_s", &catalog_epochs, nb::rv_policy::move, "element epochs, UTC seconds since J2000")
+      .def_prop_ro("bad_entries", [](const Catalog& c) { return c.bad_entries; },
+                   "entries rejected by the reader")
+      .def_prop_ro("issues", &issue_messages,
+                   "one message per rejected entry: 'FILE:LINE:COL: expected ..., found ...'");
+  m.def("read_catalog_text", &sgp4::read_catalog, nb::arg("text"), nb::arg("source"),
+        "Reads a catalog's text (format guessed: TLE/3LE, OMM KVN/XML, GP JSON/CSV).");
+  m.def("read_catalog_file", [](const std::string& path) {
+        return sgp4::read_catalog(read_text_file(path, "catalog"), path);
+      }, nb::arg("path"));
+  m.def("sgp4_propagate", &propagate, nb::arg("catalog"), nb::arg("start_utc"), nb::arg("t_s"),
+        nb::arg("frame"), nb::arg("threads"),
+        "(start_j2000_s, r_m[N,T,3], v_mps[N,T,3], error[N,T]) of every object at every instant.");
+  m.def("sgp4_error_text", [](int code) -> std::string {
+        if (code < 0 || code > static_cast<int>(sgp4::Sgp4Error::kDecayed)) return "unknown code";
+        return sgp4::sgp4_error_text(static_cast<sgp4::Sgp4Error>(code));
+      }, nb::arg("code"));
+  m.def("utc_text", [](double j2000_s) {
+        return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s));
+      }, nb::arg("j2000_s"), "'YYYY-MM-DD hh:mm:ss.fffffffff' of UTC seconds since J2000");
+}
+
+}  // namespace evade::python
