@@ -1,0 +1,164 @@
+// SGP4 of N objects x T instants into caller arrays (propagate_grid.hpp), the call under the
+// Python evade.sgp4.propagate: the same numbers as `evade propagate` on the SGP4-VER set of
+// Vallado et al. 2006 (same code path, so bit for bit), errors per instant, instants in any
+// order, threads that do not change a byte, and the checks of its inputs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "evade/sgp4/propagate_catalog_command.hpp"
+#include "evade/sgp4/propagate_grid.hpp"
+
+namespace evade::sgp4 {
+namespace {
+
+// The element lines of SGP4-VER.TLE (its lines carry the test's start, stop and step after
+// column 69). Checked non-empty, so that no test below passes on an empty catalog.
+Catalog sgp4_ver() {
+  std::ifstream in(EVADE_TEST_SGP4_VER_TLE);
+  std::string line, text;
+  while (std::getline(in, line))
+    if (line.size() >= 69 && (line[0] == '1' || line[0] == '2')) text += line.substr(0, 69) + "\n";
+  Catalog c = read_catalog(text, "SGP4-VER.TLE");
+  if (c.objects.size() < 30) throw std::runtime_error("SGP4-VER.TLE: too few element sets read");
+  return c;
+}
+
+struct Grid {
+  std::vector<double> r, v;
+  std::vector<std::int32_t> err;
+};
+
+Grid run_grid(const Catalog& c, double start_j2000_s, const std::vector<double>& t_s, bool j2000,
+              int threads) {
+  Grid g;
+  const std::size_t states = c.objects.size() * t_s.size();
+  g.r.resize(3 * states);
+  g.v.resize(3 * states);
+  g.err.resize(states);
+  StateGridRequest req;
+  req.start_j2000_s = start_j2000_s;
+  req.t_s = t_s.data();
+  req.n_times = t_s.size();
+  req.j2000 = j2000;
+  req.threads = threads;
+  propagate_grid(c, req, {g.r.data(), g.v.data(), g.err.data()});
+  return g;
+}
+
+std::vector<double> hourly(int hours) {
+  std::vector<double> t;
+  for (int k = 0; k <= hours; ++k) t.push_back(3600.0 * k);
+  return t;
+}
+
+// Every state `evade propagate` prints (up to a track's first SGP4 error) is the grid's, bit
+// for bit, in both frames; at the instant the command stopped, the grid has the same error.
+TEST(PropagateGrid, EqualsThePropagateCommandOnSgp4Ver) {
+  for (const char* frame : {"teme", "eci"}) {
+    PropagateCatalogRequest cmd;
+    cmd.catalog = sgp4_ver();
+    cmd.span_s = 86400.0;
+    cmd.step_s = 3600.0;
+    cmd.frame = frame;
+    const PropagateCatalogResult r = run_propagate_catalog(cmd);
+    const std::vector<double> t = hourly(24);
+    const Grid g = run_grid(cmd.catalog, r.start_j2000_s, t, frame_is_j2000(frame), 2);
+    ASSERT_EQ(r.objects.size(), cmd.catalog.objects.size());
+    int errors = 0;
+    for (std::size_t i = 0; i < r.objects.size(); ++i) {
+      const CatalogTrack& tr = r.objects[i];
+      for (std::size_t k = 0; k < tr.states.size(); ++k) {
+        const std::size_t s = i * t.size() + k;
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_EQ(g.r[3 * s + c], tr.states[k].r_m[c]) << tr.id << " k " << k;
+          ASSERT_EQ(g.v[3 * s + c], tr.states[k].v_mps[c]) << tr.id << " k " << k;
+        }
+      }
+      if (tr.error != Sgp4Error::kNone) {
+        ++errors;
+        EXPECT_EQ(g.err[i * t.size() + tr.states.size()], static_cast<std::int32_t>(tr.error)) << tr.id;
+      }
+    }
+    EXPECT_GT(errors, 0) << "SGP4-VER holds element sets that fail: the error path is tested";
+  }
+}
+
+// Each (object, instant) on its own: reversed instants give the reversed grid, and every
+// error code, NaN or state equals the propagator's at that instant alone.
+TEST(PropagateGrid, InstantsInAnyOrderAndErrorsPerInstant) {
+  const Catalog c = sgp4_ver();
+  const double start = latest_epoch_seconds_since_j2000(c.objects);
+  std::vector<double> t = hourly(48), back(t.rbegin(), t.rend());
+  const Grid g = run_grid(c, start, t, false, 1), b = run_grid(c, start, back, false, 1);
+  const std::size_t n_t = t.size();
+  for (std::size_t i = 0; i < c.objects.size(); ++i) {
+    const Sgp4Propagator p(c.objects[i], OperationMode::kImproved);
+    const double offset_s = start - epoch_seconds_since_j2000(c.objects[i]);
+    for (std::size_t k = 0; k < n_t; ++k) {
+      const std::size_t s = i * n_t + k, sb = i * n_t + (n_t - 1 - k);
+      EXPECT_EQ(g.err[s], b.err[sb]);
+      const Sgp4State ref = p.init_error() != Sgp4Error::kNone ? Sgp4State{p.init_error(), {}, {}}
+                                                               : p.propagate_s(offset_s + t[k]);
+      ASSERT_EQ(g.err[s], static_cast<std::int32_t>(ref.error));
+      const bool nan = ref.error != Sgp4Error::kNone && ref.error != Sgp4Error::kDecayed;
+      ASSERT_EQ(std::isnan(g.r[3 * s]), nan);
+      if (!nan) {
+        EXPECT_EQ(g.r[3 * s], ref.r_teme_m.x());
+        EXPECT_EQ(g.r[3 * s + 2], b.r[3 * sb + 2]);
+        EXPECT_EQ(g.v[3 * s + 1], ref.v_teme_mps.y());
+      }
+    }
+  }
+}
+
+TEST(PropagateGrid, ThreadsDoNotChangeAByte) {
+  const Catalog c = sgp4_ver();
+  const double start = latest_epoch_seconds_since_j2000(c.objects);
+  const std::vector<double> t = hourly(12);
+  const Grid one = run_grid(c, start, t, true, 1), three = run_grid(c, start, t, true, 3);
+  EXPECT_EQ(0, std::memcmp(one.r.data(), three.r.data(), one.r.size() * sizeof(double)));
+  EXPECT_EQ(0, std::memcmp(one.v.data(), three.v.data(), one.v.size() * sizeof(double)));
+  EXPECT_EQ(one.err, three.err);
+}
+
+TEST(PropagateGrid, StartFromIsoUtcText) {
+  const Catalog c = sgp4_ver();
+  EXPECT_EQ(start_j2000_s_from_utc("", c), latest_epoch_seconds_since_j2000(c.objects));
+  EXPECT_EQ(start_j2000_s_from_utc("2000-01-01T12:00:00Z", c), 0.0);
+  EXPECT_EQ(start_j2000_s_from_utc("2000-01-01 12:00:01.5", c), 1.5);
+  EXPECT_THROW((void)start_j2000_s_from_utc("yesterday", c), std::invalid_argument);
+  EXPECT_THROW((void)start_j2000_s_from_utc("2000-13-01T00:00:00Z", c), std::invalid_argument);
+}
+
+TEST(PropagateGrid, BadInputsNamed) {
+  const Catalog c = sgp4_ver();
+  const std::vector<double> t = {0.0, std::nan(""), 60.0};
+  StateGridRequest req;
+  req.t_s = t.data();
+  req.n_times = t.size();
+  try {
+    check_state_grid_request(c, req);
+    FAIL() << "NaN instant accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("t_s[1]"), std::string::npos) << e.what();
+  }
+  req.n_times = 1;
+  req.threads = -1;
+  EXPECT_THROW(check_state_grid_request(c, req), std::invalid_argument);
+  req.threads = 0;
+  req.start_j2000_s = INFINITY;
+  EXPECT_THROW(check_state_grid_request(c, req), std::invalid_argument);
+  EXPECT_THROW((void)frame_is_j2000("gcrf"), std::invalid_argument);
+  EXPECT_FALSE(frame_is_j2000("teme"));
+  EXPECT_TRUE(frame_is_j2000("eci"));
+}
+
+}  // namespace
+}  // namespace evade::sgp4
