@@ -6,7 +6,12 @@ same numbers as ``evade ... --json``. Units are SI and in the names (``r_m``, ``
 frames too (``r_eci_m``). Bad input raises :class:`InputError` (a ValueError) with the CLI's
 message.
 """
+from pathlib import Path as _Path
+
 from ._evade import InputError, __version__
+from . import _evade
+
+_evade.set_package_scenario_dir(str(_Path(__file__).resolve().parent / "scenarios"))
 from . import sgp4
 from .screening import ScreenResult, screen
 from ._result import Record, columns

@@ -3,25 +3,14 @@ files given as a path or as their text, parameter keywords as the CLI's key=valu
 from __future__ import annotations
 
 import os
-from pathlib import Path
 from typing import Iterable, List, Mapping, Optional, Sequence, Union
 
 PathOrText = Union[str, "os.PathLike[str]"]
 
-_PACKAGE_SCENARIOS = Path(__file__).resolve().parent / "scenarios"
-
-
 def scenario_path(name_or_path: Union[str, "os.PathLike[str]"]) -> str:
-    """A shipped scenario's name ("seed0") or a YAML file's path, as ``--scenario`` takes it.
-
-    Names are looked up in the installed package first, then where the C++ library looks
-    ($EVADE_SCENARIO_DIR, the source tree)."""
-    text = os.fspath(name_or_path)
-    if os.sep not in text and not text.endswith((".yaml", ".yml")):
-        shipped = _PACKAGE_SCENARIOS / f"{text}.yaml"
-        if shipped.is_file():
-            return str(shipped)
-    return text
+    """A shipped scenario's name ("seed0") or a YAML file's path, as ``--scenario`` takes it
+    (names are found in the installed package first, then where the C++ library looks)."""
+    return os.fspath(name_or_path)
 
 
 def overrides(sets: Union[None, Mapping[str, object], Sequence[str]]) -> List[str]:
@@ -39,7 +28,10 @@ def _value_text(v: object) -> str:
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, float):
-        return repr(v)  # shortest text that reads back to the same double
+        # The shortest text that reads back to the same double, an integral value without its
+        # ".0" (as a user types it on the command line, and as the messages echo it).
+        text = repr(v)
+        return text[:-2] if text.endswith(".0") else text
     return str(v)
 
 

@@ -65,8 +65,6 @@ def propagate(catalog: Union[PathOrText, Catalog], start_utc: Optional[str],
     Raises evade.InputError for an unreadable start, a non-finite time, an unknown frame or a
     catalog with no valid entry."""
     cat = read_catalog(catalog)
-    if len(cat) == 0:
-        raise _evade.InputError(f"no valid element set in the catalog ({cat.bad_entries} bad entries)")
     times = np.ascontiguousarray(t_s, dtype=np.float64)
     if times.ndim != 1:
         raise _evade.InputError(f"t_s must be 1-D seconds after start_utc, not of shape {times.shape}")

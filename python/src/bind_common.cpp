@@ -10,34 +10,54 @@
 namespace evade::python {
 
 void register_errors(nb::module_& m) {
-  static nb::object input_error;  // the type lives as long as the module
-  input_error = nb::steal(PyErr_NewExceptionWithDoc(
+  // Held for the life of the process and never released: a static nb::object would be
+  // released after the interpreter has finalized (a fatal error at exit).
+  static PyObject* input_error = PyErr_NewExceptionWithDoc(
       "evade._evade.InputError",
       "Bad input (a file, a scenario key, an argument): the message the evade CLI prints.",
-      PyExc_ValueError, nullptr));
-  m.attr("InputError") = input_error;
+      PyExc_ValueError, nullptr);
+  if (input_error == nullptr) throw nb::python_error();
+  m.attr("InputError") = nb::borrow(input_error);
   nb::register_exception_translator(
       [](const std::exception_ptr& p, void*) {
         try {
           std::rethrow_exception(p);
         } catch (const config::ConfigError& e) {
-          PyErr_SetString(input_error.ptr(), e.what());
+          PyErr_SetString(input_error, e.what());
         } catch (const std::invalid_argument& e) {
-          PyErr_SetString(input_error.ptr(), e.what());
+          PyErr_SetString(input_error, e.what());
         } catch (const std::domain_error& e) {
-          PyErr_SetString(input_error.ptr(), e.what());
+          PyErr_SetString(input_error, e.what());
         }
       },
       nullptr);
 }
 
 nb::object json_to_python(const nlohmann::json& j) {
-  static nb::object loads = nb::module_::import_("json").attr("loads");
-  return loads(j.dump());
+  // Never released (see register_errors): the function outlives every call.
+  static PyObject* loads = nb::object(nb::module_::import_("json").attr("loads")).release().ptr();
+  return nb::borrow(loads)(j.dump());
 }
 
+namespace {
+std::string& package_scenario_dir() {
+  static std::string dir;  // set once by the package's __init__ (set_package_scenario_dir)
+  return dir;
+}
+}  // namespace
+
+void set_package_scenario_dir(const std::string& dir) { package_scenario_dir() = dir; }
+
 config::Scenario load_scenario(const std::string& name_or_path, const std::vector<std::string>& sets) {
-  config::Scenario s = config::Scenario::load(name_or_path);
+  // A shipped name is read from the installed package first, under its name (the CLI's echo
+  // "scenario": "seed2"); anything else is Scenario::load's (paths, $EVADE_SCENARIO_DIR, ...).
+  const bool is_name = name_or_path.find('/') == std::string::npos &&
+                       name_or_path.find(".yaml") == std::string::npos &&
+                       name_or_path.find(".yml") == std::string::npos;
+  const std::string shipped = package_scenario_dir() + "/" + name_or_path + ".yaml";
+  config::Scenario s = is_name && !package_scenario_dir().empty() && std::ifstream(shipped).good()
+                           ? config::Scenario::from_yaml_string(read_text_file(shipped, "scenario"), name_or_path)
+                           : config::Scenario::load(name_or_path);
   for (const std::string& a : sets) s.apply_override(a);
   return s;
 }

@@ -36,7 +36,11 @@ void register_errors(nb::module_& m);
 /// exactly as the CLI prints them (shortest round-trip text, read back by json.loads).
 nb::object json_to_python(const nlohmann::json& j);
 
-/// The scenario as `--scenario NAME_OR_PATH --set k=v ...` loads it.
+/// The folder of the scenarios the package ships (names are looked up there first).
+void set_package_scenario_dir(const std::string& dir);
+
+/// The scenario as `--scenario NAME_OR_PATH --set k=v ...` loads it (a shipped name found in
+/// the package's folder first, keeping the name as its source, as the CLI does).
 config::Scenario load_scenario(const std::string& name_or_path, const std::vector<std::string>& sets);
 
 /// The whole text of a file; std::invalid_argument "<what>: cannot open '<path>'" (the CLI's

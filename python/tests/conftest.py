@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 from pathlib import Path
 from typing import List, Tuple
@@ -53,9 +54,23 @@ def cli_error():
 
 
 def cli_message(stderr: str) -> str:
-    """The message of the CLI's error line ("evade: invalid input: MSG" / "evade: error: MSG")."""
+    """The message of the CLI's error line: "evade: invalid input: MSG", "evade: error: MSG", or
+    a parameter flag's "--FLAG: MSG (flag --FLAG)" (the declaration's check, run by the flag)."""
     for line in stderr.splitlines():
         for prefix in ("evade: invalid input: ", "evade: error: "):
             if line.startswith(prefix):
                 return line[len(prefix):]
+        m = re.match(r"^(--[a-z0-9-]+): (.*) \(flag \1\)$", line)
+        if m:
+            return m.group(2)
     raise AssertionError(f"no error line in: {stderr}")
+
+
+def without_wall_times(doc):
+    """The document without its wall-clock fields (keys holding "wall" or named runtime_s):
+    the only values two runs of the same input may not share."""
+    if isinstance(doc, dict):
+        return {k: without_wall_times(v) for k, v in doc.items() if "wall" not in k and k != "runtime_s"}
+    if isinstance(doc, list):
+        return [without_wall_times(v) for v in doc]
+    return doc

@@ -10,6 +10,7 @@
 
 #include "evade/config/json_values.hpp"
 #include "evade/core/epoch.hpp"
+#include "evade/sgp4/propagate_grid.hpp"
 #include "evade/sgp4/teme_to_j2000.hpp"
 
 #include "catalog_instants.hpp"
@@ -70,8 +71,7 @@ void check_propagate_catalog_request(const PropagateCatalogRequest& req) {
   if (!(req.step_s > 0.0) || req.span_s / req.step_s > kMaxStepsPerObject)
     throw std::invalid_argument("--step-s = " + std::to_string(req.step_s) +
                                 " is invalid: expected a number > 0 with span/step <= 100000");
-  if (req.frame != "teme" && req.frame != "eci")
-    throw std::invalid_argument("--frame = '" + req.frame + "' is invalid: expected teme or eci");
+  (void)frame_is_j2000(req.frame);  // the frame names' one check
 }
 
 PropagateCatalogResult run_propagate_catalog(const PropagateCatalogRequest& req) {

@@ -57,10 +57,14 @@ double start_j2000_s_from_utc(const std::string& start_utc, const Catalog& catal
 bool frame_is_j2000(const std::string& frame) {
   if (frame == "teme") return false;
   if (frame == "eci") return true;
-  throw std::invalid_argument("frame = '" + frame + "' is invalid: expected teme or eci");
+  throw std::invalid_argument("--frame = '" + frame + "' is invalid: expected teme or eci");
 }
 
 void check_state_grid_request(const Catalog& catalog, const StateGridRequest& req) {
+  if (catalog.objects.empty()) {
+    throw std::invalid_argument("no valid element set in the file (" +
+                                std::to_string(catalog.bad_entries) + " bad entries)");
+  }
   if (!std::isfinite(req.start_j2000_s))
     throw std::invalid_argument("start is not a finite time");
   if (req.n_times > 0 && req.t_s == nullptr) throw std::invalid_argument("t_s is missing");
@@ -82,7 +86,7 @@ void check_state_grid_request(const Catalog& catalog, const StateGridRequest& re
 void propagate_grid(const Catalog& catalog, const StateGridRequest& req, const StateGridOut& out) {
   check_state_grid_request(catalog, req);
   const std::size_t n = catalog.objects.size();
-  if (n == 0 || req.n_times == 0) return;
+  if (req.n_times == 0) return;
   if (out.r_m == nullptr || out.v_mps == nullptr || out.error == nullptr)
     throw std::invalid_argument("propagate_grid: an output array is missing");
   int threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -156,6 +156,13 @@ TEST(PropagateGrid, BadInputsNamed) {
   req.start_j2000_s = INFINITY;
   EXPECT_THROW(check_state_grid_request(c, req), std::invalid_argument);
   EXPECT_THROW((void)frame_is_j2000("gcrf"), std::invalid_argument);
+  const Catalog none = read_catalog("1 00005U garbage\n", "bad.tle");
+  try {
+    check_state_grid_request(none, req);
+    FAIL() << "empty catalog accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "no valid element set in the file (1 bad entries)");
+  }
   EXPECT_FALSE(frame_is_j2000("teme"));
   EXPECT_TRUE(frame_is_j2000("eci"));
 }

@@ -41,8 +41,9 @@ struct StateGridRequest {
   int threads = 0;             ///< worker threads; 0: hardware concurrency
 };
 
-/// Checks the request (finite start and instants, at most 1e9 states in all, frame) before any
-/// work; std::invalid_argument naming what is wrong.
+/// Checks the request (a catalog with a valid entry: "no valid element set in the file (N bad
+/// entries)" as `evade propagate` says; finite start and instants; at most 1e9 states; threads)
+/// before any work; std::invalid_argument naming what is wrong.
 void check_state_grid_request(const Catalog& catalog, const StateGridRequest& req);
 
 /// Propagates catalog.objects (in catalog order) at every instant into out, which must hold
@@ -50,7 +51,7 @@ void check_state_grid_request(const Catalog& catalog, const StateGridRequest& re
 void propagate_grid(const Catalog& catalog, const StateGridRequest& req, const StateGridOut& out);
 
 /// "teme" -> false, "eci" (J2000) -> true, as `evade propagate --frame`; std::invalid_argument
-/// ("frame = 'x' is invalid: expected teme or eci") otherwise.
+/// ("--frame = 'x' is invalid: expected teme or eci") otherwise.
 bool frame_is_j2000(const std::string& frame);
 
 }  // namespace evade::sgp4
