@@ -100,23 +100,13 @@ def simulate(scenario: Union[str, "os.PathLike[str]"] = "seed0", *,
     return SimResult(doc, _series_arrays(columns), mc_miss, mc_dv)
 
 
-_U64 = (1 << 64) - 1
-
-
-def _splitmix64(seed: int, i: int) -> int:
-    z = (seed + 0x9E3779B97F4A7C15 * (i + 1)) & _U64
-    z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9) & _U64
-    z = ((z ^ (z >> 27)) * 0x94D049BB133111EB) & _U64
-    return z ^ (z >> 31)
-
-
 def monte_carlo_seeds(seed: int, run: int) -> Dict[str, int]:
     """The noise seeds of Monte Carlo run ``run`` (0-based) of ``simulate(runs=..., seed=seed)``
     and ``evade sim --runs --seed``, as ``set=`` overrides: ``{"sensor.seed": ...,
     "actuator.seed": ...}`` (splitmix64 of (seed, 2·run) and (seed, 2·run + 1)). A single run
     with these overrides flies exactly that Monte Carlo run."""
-    s, i = int(seed) & _U64, int(run)
-    return {"sensor.seed": _splitmix64(s, 2 * i), "actuator.seed": _splitmix64(s, 2 * i + 1)}
+    sensor, actuator = _evade.monte_carlo_run_seeds(int(seed), int(run))
+    return {"sensor.seed": sensor, "actuator.seed": actuator}
 
 
 def _config_overrides(config: Mapping[str, object]) -> list:

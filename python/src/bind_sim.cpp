@@ -28,6 +28,7 @@
 #include "evade/config/read_params.hpp"
 #include "evade/guidance/guidance_law.hpp"
 #include "evade/guidance/guidance_params.hpp"
+#include "evade/sim/monte_carlo.hpp"
 #include "evade/sim/sim_command.hpp"
 #include "evade/sim/sim_csv.hpp"
 
@@ -459,6 +460,10 @@ void bind_sim(nb::module_& m) {
         nb::arg("runs"), nb::arg("seed"), nb::arg("threads"), nb::arg("series"),
         "(JSON of `evade sim --json`, closest approach found, warnings, {CSV column: values} "
         "or None, per-run miss_m or None, per-run dv_mps or None)");
+  m.def("monte_carlo_run_seeds", [](std::uint64_t seed, std::uint64_t run) {
+        const sim::MonteCarloRunSeeds s = sim::monte_carlo_run_seeds(seed, run);
+        return nb::make_tuple(s.sensor, s.actuator);
+      }, nb::arg("seed"), nb::arg("run"), "(sensor seed, actuator seed) of Monte Carlo run `run`");
   bind_thrust_command(m);
   bind_guidance_law(m);
 }

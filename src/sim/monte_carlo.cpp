@@ -23,6 +23,10 @@ std::uint64_t splitmix64(std::uint64_t seed, std::uint64_t i) {
 
 }  // namespace
 
+MonteCarloRunSeeds monte_carlo_run_seeds(std::uint64_t seed, std::uint64_t run) noexcept {
+  return {splitmix64(seed, 2 * run), splitmix64(seed, 2 * run + 1)};
+}
+
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) throw std::invalid_argument("percentile: no values");
   std::sort(values.begin(), values.end());
@@ -58,8 +62,9 @@ MonteCarloRuns run_monte_carlo_range(const SimConfig& base, int run_begin, int r
         const std::uint64_t i =  // the run index
             static_cast<std::uint64_t>(run_begin) + static_cast<std::uint64_t>(k);
         SimConfig c = base;
-        c.sensor.seed = splitmix64(seed, 2 * i);
-        c.actuator.seed = splitmix64(seed, 2 * i + 1);
+        const MonteCarloRunSeeds seeds = monte_carlo_run_seeds(seed, i);
+        c.sensor.seed = seeds.sensor;
+        c.actuator.seed = seeds.actuator;
         auto ep = make_in_process_endpoint(c.guidance, c.guidance.armed);
         const SimResult s = run_simulation(c, *ep);
         if (!s.closest_approach_found) throw std::runtime_error("no closest approach found");

@@ -30,6 +30,15 @@ struct MonteCarloRuns {
   std::vector<double> dv_mps;
 };
 
+/// The noise seeds of Monte Carlo run `run` (0-based) of a campaign seeded `seed`:
+/// splitmix64(seed, 2 run) for the sensor and splitmix64(seed, 2 run + 1) for the actuator.
+/// A single run with these seeds flies exactly that run of the campaign.
+struct MonteCarloRunSeeds {
+  std::uint64_t sensor = 0;
+  std::uint64_t actuator = 0;
+};
+MonteCarloRunSeeds monte_carlo_run_seeds(std::uint64_t seed, std::uint64_t run) noexcept;
+
 /// Percentile p ∈ [0, 100] with linear interpolation between order statistics (R type 7).
 double percentile(std::vector<double> values, double p);
 
