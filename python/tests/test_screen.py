@@ -99,3 +99,16 @@ def test_interpreter_exits_cleanly_after_results_are_made():
     code = "import evade, pandas; r = evade.screen('seed2'); print(len(pandas.DataFrame(r.events)))"
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False)
     assert p.returncode == 0 and "Fatal" not in p.stderr, p.stderr
+
+
+def test_objects_csv_with_j2_equals_cli(tmp_path, cli_json):
+    # The seed-2 pair as a CSV (the reader's columns), moved by two-body + J2.
+    csv = tmp_path / "objects.csv"
+    csv.write_text("name,a_m,e,i_deg,raan_deg,argp_deg,mean_anomaly_deg,size_m,pos_error_m\n"
+                   "sat1,7371000,0,90,70,0,0,1,0.3\n"
+                   "sat2,7371000,0,90,250,0,0,3,0.5\n"
+                   "sat3,7371500,0.001,89.5,70.2,10,359.9,2,0.4\n")
+    doc = cli_json(["screen", "--objects", str(csv), "--set", "gravity=two_body_j2", "--quiet"])
+    r = evade.screen(objects_csv=csv, set={"gravity": "two_body_j2"})
+    assert without_wall_times(r.to_dict()) == without_wall_times(doc)
+    assert r.scenario.gravity == "two_body_j2" and len(r.events["miss_m"]) == len(doc["events"]) > 0
