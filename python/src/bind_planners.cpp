@@ -22,32 +22,16 @@
 #include "evade/formation/formation_command.hpp"
 #include "evade/observability/burn_plan.hpp"
 #include "evade/observability/observability_command.hpp"
+#include "evade/sim/plan_file.hpp"
 #include "evade/threat/burn_plan.hpp"
 #include "evade/threat/threat_area_command.hpp"
 
 namespace evade::python {
 namespace {
 
-// The names of the plan file (sim/plan_file.hpp) for PlanSource and of PlanObjective.
-std::string source_name(int source) {
-  switch (static_cast<PlanSource>(source)) {
-    case PlanSource::kThreatArea: return "threat-area";
-    case PlanSource::kFormation: return "formation";
-    case PlanSource::kObservability: return "observability";
-    case PlanSource::kCollisionAvoidance: return "collision-avoidance";
-    case PlanSource::kUnknown: break;
-  }
-  return "unknown";
-}
-
-std::string objective_name(int objective) {
-  switch (static_cast<PlanObjective>(objective)) {
-    case PlanObjective::kPaper: return "paper";
-    case PlanObjective::kLosChange: return "los-change";
-    case PlanObjective::kEstimation: return "estimation";
-  }
-  return "unknown";
-}
+// The names of the plan file and of the observability objectives, from their one table each.
+std::string source_name(int source) { return sim::plan_source_name(source); }
+std::string objective_name(int objective) { return observability::plan_objective_name(objective); }
 
 std::size_t impulse_count(const BurnPlan& p) {
   return static_cast<std::size_t>(std::max(0, std::min(p.n_impulses, BurnPlan::kMaxImpulses)));

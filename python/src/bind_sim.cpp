@@ -68,91 +68,26 @@ void check_run_options(int runs, int threads, long long seed) {
 }
 
 // ---------------------------------------------------------------------------------------
-// The time history as columns (the names and values of sim_csv.hpp's rows)
+// The time history as columns (sim_csv.hpp's one table of the CSV's columns)
 
-using SampleValue = double (*)(const SimSample&);
-
-struct Column {
-  const char* name;
-  SampleValue value;
-};
-
-Vec3 rel_eci_m(const SimSample& s) { return s.debris.r_eci_m - s.satellite.r_eci_m; }
-
-// Every column of sim_csv_header() but mode and reason (text), in the header's order.
-const Column kColumns[] = {
-    {"t_s", [](const SimSample& s) { return s.t_s; }},
-    {"sat_x_m", [](const SimSample& s) { return s.satellite.r_eci_m.x(); }},
-    {"sat_y_m", [](const SimSample& s) { return s.satellite.r_eci_m.y(); }},
-    {"sat_z_m", [](const SimSample& s) { return s.satellite.r_eci_m.z(); }},
-    {"sat_vx_mps", [](const SimSample& s) { return s.satellite.v_eci_mps.x(); }},
-    {"sat_vy_mps", [](const SimSample& s) { return s.satellite.v_eci_mps.y(); }},
-    {"sat_vz_mps", [](const SimSample& s) { return s.satellite.v_eci_mps.z(); }},
-    {"deb_x_m", [](const SimSample& s) { return s.debris.r_eci_m.x(); }},
-    {"deb_y_m", [](const SimSample& s) { return s.debris.r_eci_m.y(); }},
-    {"deb_z_m", [](const SimSample& s) { return s.debris.r_eci_m.z(); }},
-    {"rel_x_m", [](const SimSample& s) { return rel_eci_m(s).x(); }},
-    {"rel_y_m", [](const SimSample& s) { return rel_eci_m(s).y(); }},
-    {"rel_z_m", [](const SimSample& s) { return rel_eci_m(s).z(); }},
-    {"range_m", [](const SimSample& s) { return s.range_m; }},
-    {"range_rate_mps", [](const SimSample& s) { return s.range_rate_mps; }},
-    {"los_rate_true_radps", [](const SimSample& s) { return s.los_rate_true_radps; }},
-    {"zem_true_m", [](const SimSample& s) { return sim::zem_true_m(s); }},
-    {"e_theta_true_x", [](const SimSample& s) { return s.e_theta_true_eci.x(); }},
-    {"e_theta_true_y", [](const SimSample& s) { return s.e_theta_true_eci.y(); }},
-    {"e_theta_true_z", [](const SimSample& s) { return s.e_theta_true_eci.z(); }},
-    {"has_meas", [](const SimSample& s) { return s.has_measurement ? 1.0 : 0.0; }},
-    {"meas_el_rad", [](const SimSample& s) { return s.meas.elevation_rad; }},
-    {"meas_az_rad", [](const SimSample& s) { return s.meas.azimuth_rad; }},
-    {"los_rate_est_radps", [](const SimSample& s) { return s.status.los_rate_radps; }},
-    {"los_rate_est_sd_radps",
-     [](const SimSample& s) { return std::sqrt(std::max(s.status.los_rate_var_rad2ps2, 0.0)); }},
-    {"e_theta_est_x", [](const SimSample& s) { return s.status.e_theta_eci.x(); }},
-    {"e_theta_est_y", [](const SimSample& s) { return s.status.e_theta_eci.y(); }},
-    {"e_theta_est_z", [](const SimSample& s) { return s.status.e_theta_eci.z(); }},
-    {"cmd_accel_mps2", [](const SimSample& s) { return s.cmd.accel_mps2; }},
-    {"cmd_dir_x", [](const SimSample& s) { return s.cmd.u_eci.x(); }},
-    {"cmd_dir_y", [](const SimSample& s) { return s.cmd.u_eci.y(); }},
-    {"cmd_dir_z", [](const SimSample& s) { return s.cmd.u_eci.z(); }},
-    {"accel_x_mps2", [](const SimSample& s) { return s.accel_applied_eci_mps2.x(); }},
-    {"accel_y_mps2", [](const SimSample& s) { return s.accel_applied_eci_mps2.y(); }},
-    {"accel_z_mps2", [](const SimSample& s) { return s.accel_applied_eci_mps2.z(); }},
-    {"dv_used_mps", [](const SimSample& s) { return s.status.dv_used_mps; }},
-    {"fallback", [](const SimSample& s) { return s.status.fallback_direction ? 1.0 : 0.0; }},
-};
-
-const Column* find_column(const std::string& name) {
-  for (const Column& c : kColumns) {
-    if (name == c.name) return &c;
-  }
-  return nullptr;
-}
-
-nb::list sample_names(const std::vector<SimSample>& samples, bool reason) {
-  nb::list out;
-  for (const SimSample& s : samples) {
-    out.append(reason ? guidance::reason_name(s.cmd.reason) : guidance::mode_name(s.cmd.mode));
-  }
-  return out;
-}
-
-// {CSV column name: values}, in the header's order: numbers as float64 arrays (has_meas and
+// {CSV column name: values}, in the CSV's order: numbers as float64 arrays (has_meas and
 // fallback as 0/1, turned into bool by the Python side), mode and reason as lists of names.
 nb::dict series_columns(const std::vector<SimSample>& samples) {
   nb::dict out;
-  std::istringstream header(sim::sim_csv_header());
-  std::string name;
-  while (std::getline(header, name, ',')) {
-    if (name == "mode" || name == "reason") {
-      out[name.c_str()] = sample_names(samples, name == "reason");
+  std::size_t n = 0;
+  const sim::SimCsvColumn* columns = sim::sim_csv_columns(&n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const sim::SimCsvColumn& c = columns[k];
+    if (c.text != nullptr) {
+      nb::list names;
+      for (const SimSample& s : samples) names.append(c.text(s));
+      out[c.name] = names;
       continue;
     }
-    const Column* c = find_column(name);
-    if (c == nullptr) throw std::logic_error("series: no value for the CSV column '" + name + "'");
     std::vector<double> v;
     v.reserve(samples.size());
-    for (const SimSample& s : samples) v.push_back(c->value(s));
-    out[name.c_str()] = numpy_from_vector(std::move(v), {samples.size()});
+    for (const SimSample& s : samples) v.push_back(c.number(s));
+    out[c.name] = numpy_from_vector(std::move(v), {samples.size()});
   }
   return out;
 }

@@ -6,8 +6,6 @@
 #include <string>
 
 namespace evade::observability {
-namespace {
-
 PlanObjective plan_objective(ObjectiveKind k) {
   switch (k) {
     case ObjectiveKind::kPaper: return PlanObjective::kPaper;
@@ -16,6 +14,15 @@ PlanObjective plan_objective(ObjectiveKind k) {
   }
   throw std::invalid_argument("PlanResult.objective: unknown objective");
 }
+
+std::string plan_objective_name(int code) {
+  for (ObjectiveKind k : {ObjectiveKind::kPaper, ObjectiveKind::kLosChange, ObjectiveKind::kEstimation})
+    if (static_cast<int>(plan_objective(k)) == code) return objective_name(k);
+  throw std::invalid_argument("BurnPlan.observability.objective = " + std::to_string(code) +
+                              " is not a known objective");
+}
+
+namespace {
 
 void require_finite(const char* field, bool ok) {
   if (!ok) throw std::invalid_argument(std::string("PlanResult.") + field + " is not finite");

@@ -113,14 +113,14 @@ void read_impulses(const json& arr, const std::string& where, PlanFile* f) {
   }
 }
 
-const char* source_name(int code) {
+}  // namespace
+
+const char* plan_source_name(int code) {
   for (const Source& s : kSources)
     if (static_cast<int>(s.code) == code) return s.name;
   throw std::invalid_argument("plan file: BurnPlan.source = " + std::to_string(code) +
                               " is not a known planner");
 }
-
-}  // namespace
 
 PlanFile parse_plan_file(const std::string& text, const std::string& source) {
   const std::string where = "plan file '" + source + "': ";
@@ -150,7 +150,7 @@ std::string plan_file_json(const PlanFile& f) {
   json j;
   j["format"] = kPlanFileFormat;
   j["plan_id"] = f.plan.plan_id;
-  j["source"] = source_name(f.plan.source);
+  j["source"] = plan_source_name(f.plan.source);
   j["frame"] = f.frame == guidance::PlanFrame::kEci ? "eci" : "rsw";
   j["impulses"] = config::impulses_json(f.plan);
   std::string text = j.dump(2) + "\n";

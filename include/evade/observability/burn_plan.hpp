@@ -5,11 +5,17 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "evade/core/burn_plan.hpp"
 #include "evade/observability/planner.hpp"
 
 namespace evade::observability {
+
+/// The BurnPlan code of an objective, and the objective's name ("paper", "los-change",
+/// "estimation": objective_name) of a BurnPlan code (std::invalid_argument for another).
+PlanObjective plan_objective(ObjectiveKind k);
+std::string plan_objective_name(int code);
 
 /// plan_id: the publisher's plan number. Throws std::invalid_argument if res holds a
 /// non-finite Δv, angle or value (field named).

@@ -43,6 +43,10 @@ struct PlanFile {
 /// as a valid file (the reader's rules).
 std::string plan_file_json(const PlanFile& f);
 
+/// The plan file's name of a BurnPlan source code ("threat-area", "formation",
+/// "observability", "collision-avoidance", "unknown"); std::invalid_argument for another code.
+const char* plan_source_name(int code);
+
 /// Parses and validates text; source names it in errors ("plan file 'x.json': ...").
 /// Throws std::invalid_argument naming the field, the value and what is allowed.
 PlanFile parse_plan_file(const std::string& text, const std::string& source);

@@ -6,11 +6,23 @@
 // scripts/plot_sim.py draws it.
 #pragma once
 
+#include <cstddef>
 #include <ostream>
 
 #include "evade/sim/simulator.hpp"
 
 namespace evade::sim {
+
+/// One column: its name (with its unit) and its value, a number (number != nullptr; flags as
+/// 0/1) or a name (text != nullptr: the guidance mode and reason).
+struct SimCsvColumn {
+  const char* name;
+  double (*number)(const SimSample&);
+  const char* (*text)(const SimSample&);
+};
+
+/// The columns in order (*count of them): the one table of the CSV's columns.
+const SimCsvColumn* sim_csv_columns(std::size_t* count) noexcept;
 
 /// The header line (no newline): column names with their units.
 const char* sim_csv_header() noexcept;
