@@ -57,6 +57,37 @@ void sort_events(std::vector<Conjunction>& ev) {
   });
 }
 
+// Near a TCA the distance is d(t) = sqrt(m^2 + v^2 dt^2) = m + v^2 dt^2 / (2 m): within
+// dt = sqrt(2 m eps) / v of the TCA it stays within eps of the miss. Two events of one pair
+// that close, with misses within eps, are one minimum at the eps = 1 cm resolution the
+// screen reports (SGP4's velocity jumps, up to 1e-4 m/s, move the range rate's root of a
+// 5 m/s pair passing at 4.8 km by 0.5 s and can make it cross zero twice). The quadratic
+// model holds for dt much shorter than an orbit: the window is capped at 60 s.
+long merge_repeated_approaches(std::vector<Conjunction>& ev) {
+  constexpr double kEpsM = 0.01, kCapS = 60.0;
+  std::vector<bool> drop(ev.size(), false);
+  long removed = 0;
+  for (std::size_t a = 0; a < ev.size(); ++a) {
+    if (drop[a]) continue;
+    for (std::size_t b = a + 1; b < ev.size() && ev[b].tca_s - ev[a].tca_s <= kCapS; ++b) {
+      if (drop[b] || ev[b].i != ev[a].i || ev[b].j != ev[a].j) continue;
+      const double m = std::max(std::min(ev[a].miss_m, ev[b].miss_m), 0.0);
+      const double v = std::max(ev[a].rel_speed_mps, 1e-9);
+      const double window_s = std::min(kCapS, 1e-3 + std::sqrt(2.0 * m * kEpsM) / v);
+      if (ev[b].tca_s - ev[a].tca_s > window_s || std::abs(ev[b].miss_m - ev[a].miss_m) > kEpsM) continue;
+      const std::size_t worse = ev[b].miss_m < ev[a].miss_m ? a : b;
+      drop[worse] = true;
+      ++removed;
+      if (worse == a) break;
+    }
+  }
+  std::size_t k = 0;
+  for (std::size_t a = 0; a < ev.size(); ++a)
+    if (!drop[a]) ev[k++] = ev[a];
+  ev.resize(k);
+  return removed;
+}
+
 void add_stats(ScreenStats& into, const ScreenStats& s) {
   into.steps += s.steps;
   into.pairs_checked += s.pairs_checked;
@@ -164,6 +195,7 @@ ScreenResult screen_robust_part(const std::vector<SpaceObject>& objects, double 
     runner.run(p_begin, p_end, res);
   }
   sort_events(res.events);
+  res.stats.repeated_roots_merged += internal::merge_repeated_approaches(res.events);
   return res;
 }
 
@@ -177,6 +209,8 @@ void merge_screen_results(ScreenResult& into, const ScreenResult& part) {
   add_stats(into.stats, part.stats);
   into.stats.pairs_after_apogee_perigee += part.stats.pairs_after_apogee_perigee;
   sort_events(into.events);
+  into.stats.repeated_roots_merged += part.stats.repeated_roots_merged +
+                                      internal::merge_repeated_approaches(into.events);
 }
 
 }  // namespace evade::conjunction

@@ -202,6 +202,7 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
                 {"narrow_phase_intervals", r.stats.refined},
                 {"root_solves", r.stats.root_solves},
                 {"unproven_leaves", r.stats.unproven_leaves},
+                {"repeated_roots_merged", r.stats.repeated_roots_merged},
                 {"threads", r.threads},
                 {"ranks", r.ranks},
                 {"grid_step_s", r.grid_step_s}};

@@ -126,6 +126,7 @@ nlohmann::json stats_json(const ScreenObjectsResult& r) {
           {"root_solves", st.root_solves},
           {"pairs_after_apogee_perigee", st.pairs_after_apogee_perigee},
           {"unproven_leaves", st.unproven_leaves},
+          {"repeated_roots_merged", st.repeated_roots_merged},
           {"all_pairs", n * (n - 1) / 2},
           {"threads", r.threads},
           {"ranks", r.ranks},

@@ -41,12 +41,12 @@ std::vector<Conjunction> unpack(const std::vector<double>& buf) {
   return ev;
 }
 
-std::array<long, 7> stats_array(const ScreenStats& s) {
+std::array<long, 8> stats_array(const ScreenStats& s) {
   return {s.steps, s.pairs_checked, s.candidates, s.refined, s.root_solves,
-          s.pairs_after_apogee_perigee, s.unproven_leaves};
+          s.pairs_after_apogee_perigee, s.unproven_leaves, s.repeated_roots_merged};
 }
 
-ScreenStats stats_from(const std::array<long, 7>& a) {
+ScreenStats stats_from(const std::array<long, 8>& a) {
   ScreenStats s;
   s.steps = a[0];
   s.pairs_checked = a[1];
@@ -55,6 +55,7 @@ ScreenStats stats_from(const std::array<long, 7>& a) {
   s.root_solves = a[4];
   s.pairs_after_apogee_perigee = a[5];
   s.unproven_leaves = a[6];
+  s.repeated_roots_merged = a[7];
   return s;
 }
 
@@ -72,9 +73,9 @@ ScreenResult gather_on_rank0(const ScreenResult& mine, const MpiSession& session
   std::vector<double> recv(session.rank() == 0 ? static_cast<std::size_t>(total) : 0);
   MPI_Gatherv(send.data(), count, MPI_DOUBLE, recv.data(), counts.data(), displs.data(),
               MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  const std::array<long, 7> s = stats_array(mine.stats);
-  std::array<long, 7> sum{};
-  MPI_Reduce(s.data(), sum.data(), 7, MPI_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
+  const std::array<long, 8> s = stats_array(mine.stats);
+  std::array<long, 8> sum{};
+  MPI_Reduce(s.data(), sum.data(), 8, MPI_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
   if (session.rank() != 0) return mine;
   ScreenResult all;
   conjunction::ScreenResult merged;

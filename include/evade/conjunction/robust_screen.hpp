@@ -90,6 +90,7 @@ struct ScreenStats {
   long root_solves = 0;           ///< Brent solves on the range rate
   long pairs_after_apogee_perigee = 0;  ///< pairs whose radius ranges overlap within max D_ij
   long unproven_leaves = 0;       ///< leaves where f could not be shown monotone
+  long repeated_roots_merged = 0; ///< second roots of one closest approach, dropped (noise)
 };
 
 struct ScreenResult {

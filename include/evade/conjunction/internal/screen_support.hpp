@@ -26,6 +26,13 @@ void check_motion_and_primary(const std::vector<SpaceObject>& objects, const Scr
 // Sorts events by tca_s, then i, then j.
 void sort_events(std::vector<Conjunction>& ev);
 
+// Keeps one event per closest approach (ev sorted by sort_events): two events of one pair
+// whose misses agree within 1 cm and whose TCAs are within sqrt(2 m 1 cm) / v of each other
+// (m the smaller miss, v the relative speed; at most 60 s) are one minimum of the distance,
+// found twice where noise in the motion's velocity makes the range rate cross zero twice;
+// the one with the smaller miss is kept. Returns how many were removed.
+long merge_repeated_approaches(std::vector<Conjunction>& ev);
+
 // Adds the per-step statistics of s (not pairs_after_apogee_perigee) to into.
 void add_stats(ScreenStats& into, const ScreenStats& s);
 
