@@ -8,11 +8,12 @@
 // sun-synchronous orbit its own co-orbital companions, near-tangent and crossing meetings,
 // HEO objects whose perigee lies below its altitude (radius ranges that overlap its own) and
 // high-drag objects whose perigee starts just above its band and decays into it during the span.
-// Requirement: zero misses and nothing extra, with the tolerances of sgp4_validation_test.cpp.
+// Requirement: zero misses and nothing extra (the same approach: tca_tolerance_s below).
 //
 // ctest runs one catalog (seed 21, 500 objects) over 1 day; the five catalogs over 7 days
 // (docs/VALIDATION.md) are the same test with EVADE_STRESS_FULL=1:
 //   EVADE_STRESS_FULL=1 build/test/conjunction/conjunction_sgp4_stress_validation
+// (EVADE_STRESS_SEEDS="21 22" runs a subset, e.g. one process per core.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -170,15 +171,30 @@ std::vector<sgp4::MeanElements> stress_catalog(std::uint64_t seed, int total, do
   return out;
 }
 
-bool same_event(const CatalogEvent& e, long i, long j, double tca_s, double miss_m, double v_mps) {
+// The same approach: the same pair, misses within 1 cm, and TCAs within the interval over
+// which the distance stays within 1 cm of its minimum. Near a TCA, d(t) = sqrt(m^2 + v^2 dt^2)
+// = m + v^2 dt^2 / (2 m): both screens find the same minimum to 1 cm of miss whenever their
+// TCAs are within dt = sqrt(2 m 1 cm) / v of each other (1.6 s for a co-orbital pair passing
+// at 3.3 km and 5 m/s; 7 ms at 14 km/s and 5 km). The TCA itself, the root of the range rate,
+// is that ill-conditioned for slow pairs: SGP4's velocity carries small jumps (where its
+// Kepler iteration count changes; sgp4_validation_test.cpp bounds their effect over 1 day by
+// 1 ms + m 2e-4 / v^2), and over 7 days slow pairs' roots moved by up to 0.2 s between two
+// brackets of the same smooth minimum. Distinct approaches of one pair are half an orbit or
+// more apart: neither window can join two of them.
+double tca_tolerance_s(double miss_m, double v_mps) {
   const double v = std::max(v_mps, 1e-3);
-  const double tca_tol_s = 1e-3 + miss_m * 2e-4 / (v * v);  // as sgp4_validation_test.cpp
+  return 1e-3 + std::max(miss_m * 2e-4 / (v * v), std::sqrt(2.0 * std::max(miss_m, 0.0) * 0.01) / v);
+}
+
+bool same_event(const CatalogEvent& e, long i, long j, double tca_s, double miss_m, double v_mps) {
   return ((e.norad_i == i && e.norad_j == j) || (e.norad_i == j && e.norad_j == i)) &&
-         std::abs(e.tca_s - tca_s) < tca_tol_s && std::abs(e.miss_m - miss_m) < 0.01;
+         std::abs(e.tca_s - tca_s) < tca_tolerance_s(miss_m, v_mps) && std::abs(e.miss_m - miss_m) < 0.01;
 }
 
 struct Tally {
   long reference = 0, found = 0, missed = 0, extra = 0, slow = 0;
+  double max_dtca_s = 0.0, max_dmiss_m = 0.0;  // over the matched approaches
+  double max_dtca_of_window = 0.0;             // the largest |dTCA| / tca_tolerance_s
 };
 
 // Every reference event (restricted to the primary's when primary >= 0) is among the
@@ -194,11 +210,17 @@ Tally compare(const std::vector<CatalogEvent>& screen, const std::vector<Conjunc
     t.slow += r.rel_speed_mps < 100.0 ? 1 : 0;
     bool hit = false;
     for (std::size_t k = 0; k < screen.size() && !hit; ++k) {
-      if (same_event(screen[k], i, j, r.tca_s, r.miss_m, r.rel_speed_mps)) hit = matched[k] = true;
+      if (!same_event(screen[k], i, j, r.tca_s, r.miss_m, r.rel_speed_mps)) continue;
+      hit = matched[k] = true;
+      const double dt = std::abs(screen[k].tca_s - r.tca_s);
+      t.max_dtca_s = std::max(t.max_dtca_s, dt);
+      t.max_dmiss_m = std::max(t.max_dmiss_m, std::abs(screen[k].miss_m - r.miss_m));
+      t.max_dtca_of_window = std::max(t.max_dtca_of_window, dt / tca_tolerance_s(r.miss_m, r.rel_speed_mps));
     }
     t.found += hit ? 1 : 0;
     t.missed += hit ? 0 : 1;
-    EXPECT_TRUE(hit) << "missed: " << i << " - " << j << " tca " << r.tca_s << " miss " << r.miss_m;
+    EXPECT_TRUE(hit) << "missed: " << i << " - " << j << " tca " << r.tca_s << " miss " << r.miss_m
+                     << " v " << r.rel_speed_mps;
   }
   for (std::size_t k = 0; k < screen.size(); ++k) {
     t.extra += matched[k] ? 0 : 1;
@@ -242,11 +264,13 @@ void check_catalog(std::uint64_t seed, double span_s) {
   ASSERT_TRUE(one.prefilter.has_value());
   const PrimaryPrefilterCounts& pc = *one.prefilter;
   std::printf("seed %llu, %zu objects, %.0f s: all pairs: reference %ld (%ld slow < 100 m/s), "
-              "screen %zu, missed %ld, extra %ld; primary: reference %ld, screen %zu, missed %ld, "
-              "extra %ld; prefilter removed %ld of %ld, kept %ld\n",
+              "screen %zu, missed %ld, extra %ld, largest |dTCA| %.3g s (%.2f of its window), "
+              "|dmiss| %.2g m; primary: reference %ld, screen %zu, missed %ld, extra %ld; "
+              "prefilter removed %ld of %ld, kept %ld\n",
               static_cast<unsigned long long>(seed), cat.size(), span_s, ta.reference, ta.slow,
-              all.events.size(), ta.missed, ta.extra, tp.reference, one.events.size(), tp.missed,
-              tp.extra, pc.removed_radius, pc.objects, pc.kept);
+              all.events.size(), ta.missed, ta.extra, ta.max_dtca_s, ta.max_dtca_of_window,
+              ta.max_dmiss_m, tp.reference, one.events.size(), tp.missed, tp.extra,
+              pc.removed_radius, pc.objects, pc.kept);
   EXPECT_GT(ta.slow, 0) << "no slow approach: the catalog does not stress the screen";
   EXPECT_GT(tp.reference, 0) << "no approach of the primary: nothing tested in --primary mode";
 }
@@ -256,12 +280,28 @@ bool full() {
   return v != nullptr && std::string(v) == "1";
 }
 
+// The seeds of the full run: EVADE_STRESS_SEEDS="21 23" (a subset, e.g. one per process), else
+// all five.
+std::vector<std::uint64_t> full_seeds() {
+  std::vector<std::uint64_t> seeds;
+  if (const char* v = std::getenv("EVADE_STRESS_SEEDS"); v != nullptr) {
+    char* end = nullptr;
+    for (const char* p = v;; p = end) {
+      const unsigned long long x = std::strtoull(p, &end, 10);
+      if (end == p) break;
+      seeds.push_back(x);
+    }
+  }
+  if (seeds.empty()) seeds = {21, 22, 23, 24, 25};
+  return seeds;
+}
+
 TEST(Sgp4StressNoMiss, AllPairsAndPrimaryFindEveryReferenceApproach) {
   if (!full()) {
     check_catalog(21, 86400.0);
     return;
   }
-  for (std::uint64_t seed : {21u, 22u, 23u, 24u, 25u}) check_catalog(seed, 7.0 * 86400.0);
+  for (std::uint64_t seed : full_seeds()) check_catalog(seed, 7.0 * 86400.0);
 }
 
 // The drifters do what they are there for: above the primary's band + D over their first
@@ -280,6 +320,39 @@ TEST(Sgp4StressNoMiss, DriftersSinkIntoThePrimarysBand) {
     EXPECT_EQ(drifters, 4);
     EXPECT_EQ(sank, drifters) << "span " << span_s << " s";
   }
+}
+
+// Seed 24's primary and its co-orbital companion pco2 (5.1 m/s, 4.81 km) over 7 days: SGP4's
+// small velocity jumps made the range rate cross zero twice, 0.47 s apart, at three of their
+// 102 approaches, and the screen reported those three twice (the 7-day run of the test
+// above found them as "extra"). One approach is one event: the same count and approaches
+// as the reference.
+TEST(Sgp4StressNoMiss, RepeatedRootsOfOneApproachAreOneEvent) {
+  const std::vector<sgp4::MeanElements> cat = stress_catalog(24, 500, 7.0 * 86400.0);
+  std::vector<sgp4::MeanElements> pair;
+  for (const sgp4::MeanElements& m : cat)
+    if (m.norad_id == kPrimary || m.name == "pco2") pair.push_back(m);
+  ASSERT_EQ(pair.size(), 2u);
+  Sgp4MotionOptions mo;
+  mo.span_s = 7.0 * 86400.0;
+  const Sgp4Screening s = sgp4_screening(pair, mo);
+  ScreenOptions opt;
+  opt.motion = s.motion;
+  opt.gravity = GravityModel::kTwoBodyJ2;
+  opt.earth = wgs72_earth();
+  opt.threshold_m = kThresholdM;
+  opt.include_warning_radius = false;
+  opt.threads = 1;
+  const ScreenResult ref = screen_reference(s.objects, mo.span_s, 1.0, opt);
+  const ScreenResult rob = screen_robust(s.objects, mo.span_s, opt);
+  EXPECT_GE(rob.stats.repeated_roots_merged, 3);
+  ASSERT_EQ(rob.events.size(), ref.events.size());
+  std::vector<CatalogEvent> found;
+  for (const Conjunction& c : rob.events)
+    found.push_back({s.norad_ids[c.i], s.norad_ids[c.j], "", "", c.tca_s, "", c.miss_m, c.rel_speed_mps});
+  const Tally t = compare(found, ref.events, s.norad_ids, -1);
+  EXPECT_EQ(t.missed, 0);
+  EXPECT_EQ(t.extra, 0);
 }
 
 }  // namespace
