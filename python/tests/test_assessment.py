@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import evade
-from conftest import _cli_path, cli_message
+from conftest import _cli_path, cli_message, without_wall_times
 
 CASE01 = "scenarios/cdm/alfano-2009-case01.cdm"
 CAM_CDM = "scenarios/cdm/cam-example.cdm"
@@ -19,14 +19,6 @@ NPD_CDM = "test/assess_cli/data/alfano-2009-case01-velocity-npd-orekit-units.cdm
 ZERO_SPEED_CDM = "test/assess_cli/data/alfano-2009-case11-zero-relative-velocity.cdm"
 
 
-def without_wall_times(doc):
-    """The document without wall-clock times (…runtime_s, wall_time_s): they differ run to run."""
-    if isinstance(doc, dict):
-        return {k: without_wall_times(v) for k, v in doc.items()
-                if not (k.endswith("runtime_s") or k == "wall_time_s")}
-    if isinstance(doc, list):
-        return [without_wall_times(v) for v in doc]
-    return doc
 
 
 def quiet_assess(*args, **kwargs):

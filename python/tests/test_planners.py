@@ -10,20 +10,12 @@ import numpy as np
 import pytest
 
 import evade
-from conftest import cli_message
+from conftest import cli_message, without_wall_times
 
 # A faster threat-area search than seed1's (the CLI suite's publish tests use the same).
 FAST_THREAT = ["sweep.step_s=20", "evasion.max_evaluations=200"]
 
 
-def without_wall_times(doc):
-    """The document without wall-clock times (…runtime_s, wall_time_s): they differ run to run."""
-    if isinstance(doc, dict):
-        return {k: without_wall_times(v) for k, v in doc.items()
-                if not (k.endswith("runtime_s") or k == "wall_time_s")}
-    if isinstance(doc, list):
-        return [without_wall_times(v) for v in doc]
-    return doc
 
 
 def set_args(sets):
