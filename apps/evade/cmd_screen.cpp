@@ -61,7 +61,8 @@ bool given(const Options& o, const std::string& flag) {
 // (exit 2), naming the flag and the mode.
 void refuse_inapplicable(const Options& o) {
   const bool catalog = !o.catalog.tle_path.empty() || !o.catalog.omm_path.empty();
-  const std::vector<const char*> catalog_only = {"--primary", "--start", "--no-prefilter"};
+  const std::vector<const char*> catalog_only = {"--primary", "--start", "--no-prefilter",
+                                                 "--no-time-filter"};
   const std::vector<const char*> objects_only = {"--population", "--objects", "--seed",
                                                  "--trace", "--csv"};
   for (const char* f : catalog ? objects_only : catalog_only) {
@@ -183,9 +184,11 @@ Runner setup(CLI::App& app) {
   app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
   app.add_flag("--no-prefilter", c.no_prefilter,
                "with --primary: propagate every object (no perigee/apogee filter first)");
+  app.add_flag("--no-time-filter", c.no_time_filter,
+               "with --primary: screen every object kept by the perigee/apogee filter over the whole span");
   add_cdm_out_options(app, c.cdm);
   for (const char* f : {"--primary", "--span-s", "--threshold-m", "--step-s", "--start", "--no-prefilter",
-                        "--population", "--objects", "--seed", "--trace", "--csv", "--method",
+                        "--no-time-filter", "--population", "--objects", "--seed", "--trace", "--csv", "--method",
                         "--threads"}) {
     o->flags.emplace_back(f, app.get_option(f));
   }

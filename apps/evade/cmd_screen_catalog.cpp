@@ -21,6 +21,7 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   req.start_utc = o.start_utc;
   req.threads = o.threads;
   req.prefilter = !o.no_prefilter;
+  req.time_filter = !o.no_time_filter;
   req.cdm = screen_cdm_options(o.cdm);
   req.validate();
   req.catalog = read_catalog_file(o.tle_path, o.omm_path);
@@ -33,7 +34,8 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   if (!o.quiet && lead) req.progress = to_stderr;
   req.ranks = mpi.size();
   req.rank = mpi.rank();
-  req.robust_screener = [&mpi](const std::vector<conjunction::SpaceObject>& objects, double span_s,
+  if (mpi.size() > 1)  // else the time filter may run (it is not split between ranks)
+    req.robust_screener = [&mpi](const std::vector<conjunction::SpaceObject>& objects, double span_s,
                                const conjunction::ScreenOptions& so) {
     return distributed::screen_distributed(objects, span_s, so, mpi);
   };

@@ -19,6 +19,7 @@ struct CatalogScreenOptions {
   std::string start_utc;     ///< --start (empty: the latest element epoch)
   int threads = 0;           ///< 0: hardware concurrency
   bool no_prefilter = false; ///< --no-prefilter: with --primary, propagate every object
+  bool no_time_filter = false; ///< --no-time-filter: with --primary, screen the whole span
   bool json = false;
   bool quiet = false;
   CdmOutOptions cdm;         ///< --cdm-out DIR ...: one CDM per event

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 namespace evade::conjunction {
@@ -59,26 +60,46 @@ sgp4::RadiusBounds bounds_over(const sgp4::MeanElements& m, double start_j2000_s
 
 }  // namespace
 
+// Object k's radius bounds over the span, on `threads` threads (object k on thread k mod
+// threads); sampled[k] is 1 when the bound came from samples.
+std::vector<sgp4::RadiusBounds> all_bounds(const std::vector<sgp4::MeanElements>& all, double start_j2000_s,
+                                           double span_s, int threads, std::vector<long>& sampled) {
+  std::vector<sgp4::RadiusBounds> b(all.size());
+  sampled.assign(all.size(), 0);
+  const std::size_t n_threads = static_cast<std::size_t>(std::max(1, threads));
+  const auto work = [&](std::size_t first) {
+    for (std::size_t k = first; k < all.size(); k += n_threads)
+      b[k] = bounds_over(all[k], start_j2000_s, span_s, &sampled[k]);
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < n_threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& t : pool) t.join();
+  return b;
+}
+
 std::vector<sgp4::MeanElements> prefilter_primary(const std::vector<sgp4::MeanElements>& all,
                                                   long primary_norad, double start_j2000_s,
                                                   double span_s, double threshold_m,
-                                                  PrimaryPrefilterCounts* counts) {
+                                                  PrimaryPrefilterCounts* counts, int threads) {
   PrimaryPrefilterCounts c;
   c.objects = static_cast<long>(all.size());
   long primary = -1;
   for (std::size_t k = 0; k < all.size() && primary < 0; ++k)
     if (all[k].norad_id == primary_norad) primary = static_cast<long>(k);
-  sgp4::RadiusBounds p;
-  if (primary >= 0)
-    p = bounds_over(all[static_cast<std::size_t>(primary)], start_j2000_s, span_s, &c.sampled);
+  std::vector<long> sampled;
+  const std::vector<sgp4::RadiusBounds> b =
+      primary >= 0 ? all_bounds(all, start_j2000_s, span_s, threads, sampled) : std::vector<sgp4::RadiusBounds>{};
+  const sgp4::RadiusBounds p = primary >= 0 ? b[static_cast<std::size_t>(primary)] : sgp4::RadiusBounds{};
   c.primary_bounded = p.bounded;
+  if (primary >= 0) c.sampled = sampled[static_cast<std::size_t>(primary)];
   std::vector<sgp4::MeanElements> kept;
   for (std::size_t k = 0; k < all.size(); ++k) {
     bool keep = !p.bounded || static_cast<long>(k) == primary;
     if (!keep) {
-      const sgp4::RadiusBounds b = bounds_over(all[k], start_j2000_s, span_s, &c.sampled);
-      if (!b.bounded) ++c.unbounded;
-      keep = !b.bounded || (b.min_m <= p.max_m + threshold_m && b.max_m >= p.min_m - threshold_m);
+      c.sampled += sampled[k];
+      if (!b[k].bounded) ++c.unbounded;
+      keep = !b[k].bounded || (b[k].min_m <= p.max_m + threshold_m && b[k].max_m >= p.min_m - threshold_m);
       if (!keep) ++c.removed_radius;
     }
     if (keep) kept.push_back(all[k]);

@@ -56,7 +56,7 @@ Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
   if (filter) {
     counts->emplace();
     kept = prefilter_primary(req.catalog.objects, req.primary_norad, mo.start_j2000_s,
-                             req.span_s, req.threshold_m, &**counts);
+                             req.span_s, req.threshold_m, &**counts, mo.threads);
   }
   Sgp4Screening s = sgp4_screening(filter ? kept : req.catalog.objects, mo);
   if (req.diagnostic)
@@ -67,16 +67,15 @@ Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
   return s;
 }
 
-ScreenOptions catalog_options(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
+// The screen's options but for the motion and the primary (catalog_options adds them).
+ScreenOptions base_options(const ScreenCatalogRequest& req) {
   ScreenOptions so;
-  so.motion = s.motion;
   so.gravity = GravityModel::kTwoBodyJ2;
   so.earth = wgs72_earth();
   so.threshold_m = req.threshold_m;
   so.include_warning_radius = false;  // catalogs carry no sizes: the threshold alone
   so.step_s = req.step_s;
   so.threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  so.primary = primary_index(req, s);
   if (req.progress) {
     so.progress = [&req](double f) {
       char buf[64];
@@ -84,6 +83,13 @@ ScreenOptions catalog_options(const ScreenCatalogRequest& req, const Sgp4Screeni
       req.progress(buf);
     };
   }
+  return so;
+}
+
+ScreenOptions catalog_options(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
+  ScreenOptions so = base_options(req);
+  so.motion = s.motion;
+  so.primary = primary_index(req, s);
   return so;
 }
 
@@ -150,28 +156,70 @@ void apply_param_overrides(const std::vector<std::string>& key_values, ScreenCat
   sc.check_all_used();
 }
 
-ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
-  req.validate();
-  const auto t0 = std::chrono::steady_clock::now();
-  std::optional<PrimaryPrefilterCounts> prefilter;
-  const Sgp4Screening s = catalog_motion(req, &prefilter);
-  const auto t1 = std::chrono::steady_clock::now();
-  const ScreenOptions so = catalog_options(req, s);
-  const ScreenResult r = req.robust_screener ? req.robust_screener(s.objects, req.span_s, so)
-                                              : screen_robust(s.objects, req.span_s, so);
-  const auto t2 = std::chrono::steady_clock::now();
-  if (req.progress) req.progress("\n");
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+// The result of a screen of s (events r, options so): header, events and CDMs.
+ScreenCatalogResult catalog_result(const ScreenCatalogRequest& req, const Sgp4Screening& s,
+                                   const ScreenOptions& so, const ScreenResult& r) {
   ScreenCatalogResult res = catalog_header(req, s, so);
-  res.prefilter = prefilter;
   res.stats = r.stats;
-  res.motion_setup_wall_s = std::chrono::duration<double>(t1 - t0).count();
-  res.screen_wall_s = std::chrono::duration<double>(t2 - t1).count();
   res.events = catalog_events(r, s);
   if (!req.cdm.dir.empty() && req.rank == 0) {  // the other ranks hold only their part
     const assessment::ScreenCdmRun run{s.start_j2000_s, req.span_s, req.threshold_m, "catalog " + req.source};
     res.cdm = assessment::screen_event_cdms(req.cdm, run,
                                             catalog_screening_events(r.events, s, req.catalog.objects, so));
   }
+  return res;
+}
+
+// One satellite against the catalog: perigee/apogee filter, then each object inside the
+// time filter's windows only (primary_window_screen.hpp).
+ScreenCatalogResult run_windowed(const ScreenCatalogRequest& req) {
+  const auto t0 = Clock::now();
+  PrimaryPrefilterCounts counts;
+  const double start_s = screen_start_j2000_s(req);
+  const ScreenOptions base = base_options(req);
+  const std::vector<sgp4::MeanElements> kept = prefilter_primary(
+      req.catalog.objects, req.primary_norad, start_s, req.span_s, req.threshold_m, &counts, base.threads);
+  const auto t1 = Clock::now();
+  const PrimaryWindowScreen w = screen_primary_windows(kept, req.primary_norad, start_s, req.span_s,
+                                                       base, TimeFilterOptions{req.threshold_m});
+  const auto t2 = Clock::now();
+  if (req.progress) req.progress("\n");
+  if (req.diagnostic)
+    for (const auto& r : w.screening.rejected) req.diagnostic("evade screen: rejected: " + r.message() + "\n");
+  ScreenOptions so = catalog_options(req, w.screening);
+  if (!(so.step_s > 0.0)) so.step_s = auto_step_s(w.screening.objects.size());  // as the windows used
+  ScreenCatalogResult res = catalog_result(req, w.screening, so, w.result);
+  res.prefilter = counts;
+  res.time_filter = w.counts;
+  res.motion_setup_wall_s = seconds(t0, t1);
+  res.screen_wall_s = seconds(t1, t2);
+  return res;
+}
+
+}  // namespace
+
+ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
+  req.validate();
+  if (req.primary_norad >= 0 && req.prefilter && req.time_filter && !req.robust_screener) return run_windowed(req);
+  const auto t0 = Clock::now();
+  std::optional<PrimaryPrefilterCounts> prefilter;
+  const Sgp4Screening s = catalog_motion(req, &prefilter);
+  const auto t1 = Clock::now();
+  const ScreenOptions so = catalog_options(req, s);
+  const ScreenResult r = req.robust_screener ? req.robust_screener(s.objects, req.span_s, so)
+                                              : screen_robust(s.objects, req.span_s, so);
+  const auto t2 = Clock::now();
+  if (req.progress) req.progress("\n");
+  ScreenCatalogResult res = catalog_result(req, s, so, r);
+  res.prefilter = prefilter;
+  res.motion_setup_wall_s = seconds(t0, t1);
+  res.screen_wall_s = seconds(t1, t2);
   return res;
 }
 
@@ -196,6 +244,14 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
                       {"deep_space_sampled", r.prefilter->sampled},
                       {"propagated", r.prefilter->kept},
                       {"primary_radius_bounded", r.prefilter->primary_bounded}};
+  if (r.time_filter)
+    j["time_filter"] = {{"objects", r.time_filter->objects},
+                        {"removed", r.time_filter->removed},
+                        {"screened", r.time_filter->screened},
+                        {"screened_whole_span", r.time_filter->unfiltered},
+                        {"windows", r.time_filter->windows},
+                        {"window_total_s", r.time_filter->window_s},
+                        {"sgp4_pair_evaluations", r.time_filter->evaluations}};
   j["stats"] = {{"grid_steps", r.stats.steps},
                 {"pairs_checked", r.stats.pairs_checked},
                 {"candidates", r.stats.candidates},

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -174,6 +175,7 @@ std::vector<Envelope> envelopes(const std::vector<sgp4::MeanElements>& elements,
                                 const Sgp4MotionOptions& opt) {
   std::vector<Envelope> env(elements.size());
   const EarthModel earth = wgs72_earth();
+  if (!opt.envelopes) return env;
   const auto work = [&](std::size_t first, std::size_t stride) {
     for (std::size_t k = first; k < elements.size(); k += stride) {
       const sgp4::MeanElements& m = elements[k];
@@ -233,6 +235,7 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   PerturbationBound b;
   b.accel_mps2 = opt.envelope_factor * env.p_max_mps2 + opt.envelope_floor_mps2;
   b.rate_mps3 = 4.0 * n_max * b.accel_mps2;
+  if (!opt.envelopes) b.accel_mps2 = b.rate_mps3 = std::numeric_limits<double>::infinity();
   mo.bounds_.push_back(b);
   mo.sampled_.push_back(env.p_max_mps2);
   mo.n_max_radps_.push_back(n_max);
@@ -263,6 +266,7 @@ Sgp4Screening Sgp4CatalogBuilder::build(const std::vector<sgp4::MeanElements>& e
     }
     out.objects.push_back(obj);
     out.norad_ids.push_back(m.norad_id);
+    out.element_index.push_back(k);
   }
   out.motion = std::move(motion);
   return out;

@@ -52,10 +52,10 @@ sgp4::RadiusBounds sampled_radius_bounds(const sgp4::Sgp4Propagator& p, double t
 /// The primary (first element set with primary_norad) and the objects that may come within
 /// threshold_m of it over [start, start + span_s] (start: UTC s since J2000), in catalog
 /// order. When no element set has primary_norad every element set is kept (the screen then
-/// names the missing primary).
+/// names the missing primary). The objects' bounds are computed on `threads` threads (>= 1).
 std::vector<sgp4::MeanElements> prefilter_primary(const std::vector<sgp4::MeanElements>& all,
                                                   long primary_norad, double start_j2000_s,
                                                   double span_s, double threshold_m,
-                                                  PrimaryPrefilterCounts* counts);
+                                                  PrimaryPrefilterCounts* counts, int threads = 1);
 
 }  // namespace evade::conjunction

@@ -24,6 +24,7 @@
 #include "evade/assessment/screen_cdms.hpp"
 #include "evade/config/scenario.hpp"
 #include "evade/conjunction/primary_prefilter.hpp"
+#include "evade/conjunction/primary_window_screen.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/screen_scenario.hpp"
@@ -119,6 +120,10 @@ struct ScreenCatalogRequest {
   /// With a primary: set aside the objects that can never come within threshold_m of it
   /// before propagating (primary_prefilter.hpp); false screens every object.
   bool prefilter = true;
+  /// With a primary and the prefilter: screen each object only inside the time filter's
+  /// windows (primary_window_screen.hpp; in this process, not with robust_screener); false
+  /// screens the prefilter's objects over the whole span.
+  bool time_filter = true;
   int ranks = 1;                  ///< MPI ranks of robust_screener (echoed in stats)
   int rank = 0;                   ///< this process's rank: only rank 0 builds the CDMs
   RobustScreener robust_screener; ///< empty: screen_robust in this process
@@ -159,6 +164,7 @@ struct ScreenCatalogResult {
   std::vector<std::string> rejections;  ///< "NORAD id (NAME): reason"
   std::optional<long> primary_norad;
   std::optional<PrimaryPrefilterCounts> prefilter;  ///< with a primary and the prefilter
+  std::optional<TimeFilterCounts> time_filter;      ///< with the time filter
   ScreenStats stats;
   int threads = 0;
   int ranks = 1;

@@ -54,6 +54,10 @@ struct Sgp4MotionOptions {
   double envelope_floor_mps2 = 5e-6;
   double object_size_m = 0.0;     ///< SpaceObject::size_m given to every object
   int threads = 1;                ///< threads of the setup (the envelopes), >= 1
+  /// false: no perturbation envelope (states only, for reports and CDMs; perturbation() is
+  /// +inf, so the robust screener proves nothing with it). SGP4 errors inside the span are
+  /// then not looked for.
+  bool envelopes = true;
   /// Throws std::invalid_argument naming the field.
   void validate() const;
 
@@ -108,6 +112,7 @@ class Sgp4Motion : public MotionSource {
 struct Sgp4Screening {
   std::vector<SpaceObject> objects;
   std::vector<long> norad_ids;
+  std::vector<std::size_t> element_index;  ///< of each object in the element sets given
   std::shared_ptr<const Sgp4Motion> motion;
   std::vector<RejectedElementSet> rejected;
   double start_j2000_s = 0.0;
