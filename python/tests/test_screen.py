@@ -45,6 +45,22 @@ def test_catalog_primary_equals_cli(repo, cli_json):
     assert len(pd.DataFrame(ev)) == len(doc["events"])
 
 
+def test_catalog_primary_without_time_filter_equals_cli_and_the_filtered_events(repo, cli_json):
+    args = ["screen", "--tle", str(repo / CATALOG), "--primary", "90000", "--span-s", "21600",
+            "--threshold-m", "50000", "--threads", "2", "--quiet"]
+    whole = cli_json(args + ["--no-time-filter"])
+    r = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=21600, threshold_m=50000,
+                     threads=2, time_filter=False)
+    assert without_wall_times(r.to_dict()) == without_wall_times(whole)
+    assert "time_filter" not in whole
+    windows = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=21600, threshold_m=50000,
+                           threads=2).to_dict()
+    assert windows["time_filter"]["removed"] > 0
+    key = lambda e: (e["norad_j"], round(e["tca_s"], 3), round(e["miss_m"], 2))
+    assert [key(e) for e in windows["events"]] == [key(e) for e in whole["events"]]
+    assert len(whole["events"]) > 0
+
+
 def test_catalog_all_pairs_with_span_equals_cli(repo, cli_json):
     doc = cli_json(["screen", "--tle", str(repo / CATALOG), "--span-s", "1800", "--threads", "2", "--quiet"])
     r = evade.screen(catalog=(repo / CATALOG).read_text(), span_s=1800, threads=2)

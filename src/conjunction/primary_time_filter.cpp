@@ -47,7 +47,8 @@ double safe_time_s(const PrimaryTrack& p, long k, const FilterObject& j, double 
   if (!(gap > 0.0)) return 0.0;
   const double first = gap / (p.speed_bound_mps + j.speed_bound_mps);
   const double a = p.accel_bound_mps2 + j.accel_bound_mps2;
-  const double rate = rho.dot(b.v_teme_mps - p.v_teme_mps[i]) / d - 2.0 * kVelocityAllowanceMps;
+  const double rate = rho.dot(b.v_teme_mps - p.v_teme_mps[i]) / d -
+                      velocity_allowance_mps(p.speed_bound_mps) - velocity_allowance_mps(j.speed_bound_mps);
   const double second = (rate + std::sqrt(rate * rate + 2.0 * a * gap)) / a;
   return std::max(first, second);
 }
