@@ -4,8 +4,9 @@
 Generates the catalog with the shipped generator (scripts/generate_tle_catalog.py, seeded),
 runs each case with `evade screen --tle ... --json --quiet` under GNU time, and prints one
 JSON line per case: wall and CPU time, peak RSS, the setup and screening times the command
-reports, conjunctions, and the prefilter's counts (objects set aside by the perigee/apogee
-filter, deep-space ones bounded from samples, propagated).
+reports, conjunctions, the prefilter's counts (objects set aside by the perigee/apogee
+filter, deep-space ones bounded from samples, propagated) and the time filter's (objects
+never within the threshold, objects screened, windows).
 
 Usage (from the repository root, after building):
   python3 bench/catalog_screen_cases.py --evade build/apps/evade --count 30000 --seed 7 \\
@@ -35,6 +36,7 @@ def run_case(evade, tle, extra, span_s, threshold_m, threads):
             "setup_wall_s": round(r["motion_setup_wall_s"], 2),
             "screen_wall_s": round(r["screen_wall_s"], 2), "screened_objects": r["objects"],
             "conjunctions": len(r["events"]), "prefilter": r.get("prefilter"),
+            "time_filter": r.get("time_filter"),
             "pairs_checked": r["stats"]["pairs_checked"], "candidates": r["stats"]["candidates"]}
 
 

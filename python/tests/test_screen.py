@@ -46,14 +46,14 @@ def test_catalog_primary_equals_cli(repo, cli_json):
 
 
 def test_catalog_primary_without_time_filter_equals_cli_and_the_filtered_events(repo, cli_json):
-    args = ["screen", "--tle", str(repo / CATALOG), "--primary", "90000", "--span-s", "21600",
+    args = ["screen", "--tle", str(repo / CATALOG), "--primary", "90000", "--span-s", "86400",
             "--threshold-m", "50000", "--threads", "2", "--quiet"]
     whole = cli_json(args + ["--no-time-filter"])
-    r = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=21600, threshold_m=50000,
+    r = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=86400, threshold_m=50000,
                      threads=2, time_filter=False)
     assert without_wall_times(r.to_dict()) == without_wall_times(whole)
     assert "time_filter" not in whole
-    windows = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=21600, threshold_m=50000,
+    windows = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=86400, threshold_m=50000,
                            threads=2).to_dict()
     assert windows["time_filter"]["removed"] > 0
     key = lambda e: (e["norad_j"], round(e["tca_s"], 3), round(e["miss_m"], 2))

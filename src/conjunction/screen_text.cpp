@@ -73,6 +73,11 @@ std::string to_text(const ScreenCatalogResult& r) {
                      "%ld kept without a radius bound, %ld propagated\n",
                      r.prefilter->removed_radius, r.prefilter->objects, r.prefilter->unbounded,
                      r.prefilter->kept);
+  if (r.time_filter)
+    s += format_text("  time filter: %ld of %ld objects never within the threshold, %ld screened in %ld windows "
+                     "(%.0f s in all; %ld over the whole span)\n",
+                     r.time_filter->removed, r.time_filter->objects, r.time_filter->screened,
+                     r.time_filter->windows, r.time_filter->window_s, r.time_filter->unfiltered);
   for (std::size_t k = 0; k < r.events.size(); ++k) {
     const CatalogEvent& e = r.events[k];
     s += format_text("  %-24s %-24s TCA %s  miss %12.3f m  v_rel %9.3f m/s%s\n", e.name_i.c_str(),
