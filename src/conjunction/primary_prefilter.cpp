@@ -78,6 +78,22 @@ std::vector<sgp4::RadiusBounds> all_bounds(const std::vector<sgp4::MeanElements>
   return b;
 }
 
+namespace {
+
+// Whether object j (bounds bj) may come within threshold_m of the primary (bounds p), counted.
+bool may_come_within(const sgp4::RadiusBounds& p, const sgp4::RadiusBounds& bj, double threshold_m,
+                     PrimaryPrefilterCounts& c) {
+  if (!bj.bounded) {
+    ++c.unbounded;
+    return true;
+  }
+  const bool keep = bj.min_m <= p.max_m + threshold_m && bj.max_m >= p.min_m - threshold_m;
+  if (!keep) ++c.removed_radius;
+  return keep;
+}
+
+}  // namespace
+
 std::vector<sgp4::MeanElements> prefilter_primary(const std::vector<sgp4::MeanElements>& all,
                                                   long primary_norad, double start_j2000_s,
                                                   double span_s, double threshold_m,
@@ -95,14 +111,9 @@ std::vector<sgp4::MeanElements> prefilter_primary(const std::vector<sgp4::MeanEl
   if (primary >= 0) c.sampled = sampled[static_cast<std::size_t>(primary)];
   std::vector<sgp4::MeanElements> kept;
   for (std::size_t k = 0; k < all.size(); ++k) {
-    bool keep = !p.bounded || static_cast<long>(k) == primary;
-    if (!keep) {
-      c.sampled += sampled[k];
-      if (!b[k].bounded) ++c.unbounded;
-      keep = !b[k].bounded || (b[k].min_m <= p.max_m + threshold_m && b[k].max_m >= p.min_m - threshold_m);
-      if (!keep) ++c.removed_radius;
-    }
-    if (keep) kept.push_back(all[k]);
+    const bool others = p.bounded && static_cast<long>(k) != primary;
+    if (others) c.sampled += sampled[k];
+    if (!others || may_come_within(p, b[k], threshold_m, c)) kept.push_back(all[k]);
   }
   c.kept = static_cast<long>(kept.size());
   if (counts) *counts = c;
