@@ -114,7 +114,7 @@ std::vector<ObjectResult> run_objects(const Job& job) {
     try {
       for (std::size_t k = first; k < n; k += stride) {
         if (k != job.primary) run_object(job, p, k, res[k]);
-        if (first == 0 && job.screen->progress && k % 64 == 0) job.screen->progress(static_cast<double>(k) / n);
+        if (first == 0 && job.screen->progress && k % 64 == 0) job.screen->progress(static_cast<double>(k) / static_cast<double>(n));
       }
     } catch (...) {
       failed[first] = std::current_exception();
