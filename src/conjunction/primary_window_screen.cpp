@@ -6,7 +6,6 @@
 #include <exception>
 #include <stdexcept>
 #include <thread>
-#include <tuple>
 #include <utility>
 
 #include "evade/conjunction/primary_prefilter.hpp"
@@ -24,22 +23,10 @@ Sgp4MotionOptions motion_options(double start_j2000_s, double span_s, int thread
   return mo;
 }
 
-void add_stats(ScreenStats& a, const ScreenStats& b) {
-  a.steps += b.steps;
-  a.pairs_checked += b.pairs_checked;
-  a.candidates += b.candidates;
-  a.refined += b.refined;
-  a.root_solves += b.root_solves;
-  a.pairs_after_apogee_perigee += b.pairs_after_apogee_perigee;
-  a.unproven_leaves += b.unproven_leaves;
-  a.repeated_roots_merged += b.repeated_roots_merged;
-}
-
 // One object against the primary: the filter's windows and what their screens found.
 struct ObjectResult {
   ObjectWindows filter;
-  std::vector<Conjunction> events;  // i = 0 (the primary), j = 1 (the object)
-  ScreenStats stats;
+  ScreenResult screened;            // events: i = 0 (the primary), j = 1 (the object)
   std::string rejected;             // the object's rejection in a window, if any
   std::string primary_rejected;     // the primary's (an error)
 };
@@ -58,21 +45,9 @@ void screen_window(const sgp4::MeanElements& p, const sgp4::MeanElements& o, dou
   so.primary = 0;
   so.threads = 1;
   so.progress = nullptr;
-  const ScreenResult r = screen_robust(sub.objects, span_s, so);
-  add_stats(out.stats, r.stats);
-  for (Conjunction c : r.events) {
-    c.tca_s += w.t0_s;
-    out.events.push_back(c);
-  }
-}
-
-// Index of the primary in the screening, or the reason it is not there.
-std::size_t primary_index(const Sgp4Screening& s, long norad) {
-  for (std::size_t k = 0; k < s.norad_ids.size(); ++k)
-    if (s.norad_ids[k] == norad) return k;
-  for (const auto& r : s.rejected)
-    if (r.norad_id == norad) throw std::invalid_argument("--primary " + std::to_string(norad) + ": rejected: " + r.reason);
-  throw std::invalid_argument("--primary " + std::to_string(norad) + ": no such object in the catalog");
+  ScreenResult r = screen_robust(sub.objects, span_s, so);
+  for (Conjunction& c : r.events) c.tca_s += w.t0_s;
+  merge_screen_results(out.screened, r);
 }
 
 struct Job {
@@ -144,7 +119,19 @@ TimeFilterCounts count(const std::vector<ObjectResult>& res, std::size_t primary
   return c;
 }
 
+std::invalid_argument primary_rejected(long norad, const std::string& reason) {
+  return std::invalid_argument("--primary " + std::to_string(norad) + ": rejected: " + reason);
+}
+
 }  // namespace
+
+std::size_t primary_index(const Sgp4Screening& s, long norad) {
+  for (std::size_t k = 0; k < s.norad_ids.size(); ++k)
+    if (s.norad_ids[k] == norad) return k;
+  for (const auto& r : s.rejected)
+    if (r.norad_id == norad) throw primary_rejected(norad, r.reason);
+  throw std::invalid_argument("--primary " + std::to_string(norad) + ": no such object in the catalog");
+}
 
 PrimaryWindowScreen screen_primary_windows(const std::vector<sgp4::MeanElements>& elements,
                                            long primary_norad, double start_j2000_s,
@@ -157,9 +144,10 @@ PrimaryWindowScreen screen_primary_windows(const std::vector<sgp4::MeanElements>
   const sgp4::MeanElements& pe = elements[out.screening.element_index[pi]];
   const Sgp4Screening whole = sgp4_screening({pe}, motion_options(start_j2000_s, span_s, 1, true));
   if (!whole.rejected.empty())  // the primary over the whole span, as the full screen checks it
-    throw std::invalid_argument("--primary " + std::to_string(primary_norad) + ": rejected: " + whole.rejected[0].reason);
+    throw primary_rejected(primary_norad, whole.rejected[0].reason);
   ScreenOptions so = screen;
   if (!(so.step_s > 0.0)) so.step_s = auto_step_s(out.screening.objects.size());
+  out.step_s = so.step_s;
   const Job job{&elements, &out.screening, pi, start_j2000_s, span_s, &so, &filter};
   const std::vector<ObjectResult> res = run_objects(job);
   out.counts = count(res, pi);
@@ -168,7 +156,7 @@ PrimaryWindowScreen screen_primary_windows(const std::vector<sgp4::MeanElements>
   std::vector<RejectedElementSet> rejected;
   for (std::size_t k = 0; k < res.size(); ++k) {
     if (!res[k].primary_rejected.empty())
-      throw std::invalid_argument("--primary " + std::to_string(primary_norad) + ": rejected: " + res[k].primary_rejected);
+      throw primary_rejected(primary_norad, res[k].primary_rejected);
     const sgp4::MeanElements& m = elements[out.screening.element_index[k]];
     if (res[k].rejected.empty()) kept.push_back(m);
     else rejected.push_back(RejectedElementSet{m.norad_id, m.name, res[k].rejected});
@@ -182,17 +170,14 @@ PrimaryWindowScreen screen_primary_windows(const std::vector<sgp4::MeanElements>
   }
   for (std::size_t k = 0, next = 0; k < res.size(); ++k) index[k] = res[k].rejected.empty() ? next++ : k;
   for (std::size_t k = 0; k < res.size(); ++k) {
-    add_stats(out.result.stats, res[k].stats);
-    if (!res[k].rejected.empty()) continue;  // left out, as a whole-span screen leaves it
-    for (Conjunction c : res[k].events) {
+    ScreenResult part = res[k].screened;
+    if (!res[k].rejected.empty()) part.events.clear();  // left out, as a whole-span screen leaves it
+    for (Conjunction& c : part.events) {
       c.i = std::min(index[pi], index[k]);
       c.j = std::max(index[pi], index[k]);
-      out.result.events.push_back(c);
     }
+    merge_screen_results(out.result, part);
   }
-  std::sort(out.result.events.begin(), out.result.events.end(), [](const Conjunction& a, const Conjunction& b) {
-    return std::tie(a.tca_s, a.i, a.j) < std::tie(b.tca_s, b.i, b.j);
-  });
   return out;
 }
 

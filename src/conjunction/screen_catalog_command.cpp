@@ -28,13 +28,7 @@ std::string utc(double j2000_s) { return format_calendar_utc(calendar_from_secon
 
 // Index of the primary in the screened objects; names the reason when it is not there.
 long primary_index(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
-  if (req.primary_norad < 0) return -1;
-  for (std::size_t k = 0; k < s.norad_ids.size(); ++k)
-    if (s.norad_ids[k] == req.primary_norad) return static_cast<long>(k);
-  for (const auto& r : s.rejected)
-    if (r.norad_id == req.primary_norad)
-      throw std::invalid_argument("--primary " + std::to_string(req.primary_norad) + ": rejected: " + r.reason);
-  throw std::invalid_argument("--primary " + std::to_string(req.primary_norad) + ": no such object in the catalog");
+  return req.primary_norad < 0 ? -1 : static_cast<long>(conjunction::primary_index(s, req.primary_norad));
 }
 
 // The start of the screen (UTC s since J2000): --start, else the latest element epoch of the
@@ -193,7 +187,7 @@ ScreenCatalogResult run_windowed(const ScreenCatalogRequest& req) {
   if (req.diagnostic)
     for (const auto& r : w.screening.rejected) req.diagnostic("evade screen: rejected: " + r.message() + "\n");
   ScreenOptions so = catalog_options(req, w.screening);
-  if (!(so.step_s > 0.0)) so.step_s = auto_step_s(w.screening.objects.size());  // as the windows used
+  so.step_s = w.step_s;  // the grid step the windows used
   ScreenCatalogResult res = catalog_result(req, w.screening, so, w.result);
   res.prefilter = counts;
   res.time_filter = w.counts;

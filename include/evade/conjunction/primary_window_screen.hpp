@@ -32,8 +32,13 @@ struct PrimaryWindowScreen {
   /// the order of the element sets; element sets rejected by a window's screen are left out.
   Sgp4Screening screening;
   ScreenResult result;      ///< events indexed into screening.objects; the windows' stats summed
+  double step_s = 0.0;      ///< the windows' grid step [s] (screen.step_s, or auto_step_s)
   TimeFilterCounts counts;
 };
+
+/// Index of the object with NORAD `norad` in s. Throws std::invalid_argument naming
+/// "--primary N" when it was rejected (with the reason) or is not in the catalog.
+std::size_t primary_index(const Sgp4Screening& s, long norad);
 
 /// Screens the element set with NORAD primary_norad against the others of `elements` over
 /// [start, start + span_s] (start: UTC s since J2000), pairs with the primary only.
