@@ -55,14 +55,14 @@ CamLeadSweep parse_sweep(const std::string& text) {
 }
 
 // --publish / --plan-out: the plan as a BurnPlan, at the burn's UTC when known.
-int output(const Options& o, const PlanCamResult& r, nlohmann::json* j) {
+int output(const Options& o, const PlanCamResult& r, const CamPlan& plan, nlohmann::json* j) {
   if (!plan_wanted(o.out)) return 0;
   PlanOutputOptions out = o.out;
   if (out.publish && out.epoch_utime_us == 0 && !r.burn_unix_utime_us)
     throw std::invalid_argument("--publish: the burn's time is unknown (a scenario has no UTC): "
                                 "give --epoch-utime, the utime of the burn [us]");
   if (out.epoch_utime_us == 0 && r.burn_unix_utime_us) out.epoch_utime_us = *r.burn_unix_utime_us;
-  const BurnPlan bp = make_cam_burn_plan(*r.plan, plan_id(out));
+  const BurnPlan bp = make_cam_burn_plan(plan, plan_id(out));
   (*j)["plan"] = config::impulses_json(bp);
   return output_plan(out, bp, j);
 }
@@ -73,7 +73,7 @@ int run(const Options& o) {
   if (!o.sweep.empty()) req.sweep = parse_sweep(o.sweep);
   const PlanCamResult r = run_plan_cam(req);
   nlohmann::json j = to_json(r);
-  const int uplink_rc = r.plan ? output(o, r, &j) : 0;
+  const int uplink_rc = r.plan ? output(o, r, *r.plan, &j) : 0;
   if (o.common.json) print_json(j);
   else std::printf("%s", to_text(r).c_str());
   if (r.plan && !r.plan->verified_ok) {

@@ -262,7 +262,7 @@ sgp4::Catalog read_catalog_file(const std::string& tle_path, const std::string& 
   return sgp4::read_tle(read_text_file(tle_path, "--tle"), tle_path);
 }
 
-void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << '\n' << std::flush; }
 
 void print_result(bool json, const nlohmann::json& j, const std::string& text) {
   if (json) {

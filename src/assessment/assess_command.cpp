@@ -39,9 +39,8 @@ CdmFigures cdm_figures(const Cdm& c) {
   return f;
 }
 
-AssessResult run_plane(const AssessRequest& req) {
+AssessResult run_plane(const AssessRequest& req, const PrincipalEncounter& pe) {
   if (req.mc_samples > 0) throw std::invalid_argument("--mc needs states (--scenario or --cdm)");
-  const PrincipalEncounter& pe = *req.encounter_plane;
   AssessResult r;
   r.source = req.source;
   r.hbr_m = req.plane_hbr_m;
@@ -54,7 +53,7 @@ AssessResult run_plane(const AssessRequest& req) {
   return r;
 }
 
-AssessResult run_states(const AssessRequest& req) {
+AssessResult run_states(const AssessRequest& req, const ConjunctionInput& in) {
   std::optional<MonteCarloOptions> mc;
   if (req.mc_samples > 0) {
     mc = MonteCarloOptions{};
@@ -65,10 +64,10 @@ AssessResult run_states(const AssessRequest& req) {
     mc->wave_blocks = req.mc_exec.wave_blocks;
     mc->j2 = req.config.mc_j2;
   }
-  const Assessment a = assess(*req.conjunction, req.config, mc, req.mc_exec.runner);
+  const Assessment a = assess(in, req.config, mc, req.mc_exec.runner);
   AssessResult r;
   r.source = req.source;
-  r.hbr_m = req.conjunction->hbr_m;
+  r.hbr_m = in.hbr_m;
   r.miss_m = a.plane.miss_3d_m;
   r.rel_speed_mps = a.plane.rel_speed_mps;
   r.principal = a.principal;
@@ -80,8 +79,8 @@ AssessResult run_states(const AssessRequest& req) {
   r.states = StatesAtTca{a.at_tca,  a.tca_shift_s, a.tca_method, a.covariance_propagation,
                          a.npd,     a.min_eigenvalue, a.plane,   a.short_term};
   if (req.cdm) r.cdm = cdm_figures(*req.cdm);
-  const bool six = req.conjunction->obj[0].has_velocity_cov && req.conjunction->obj[1].has_velocity_cov;
-  r.choice = choose_pc(a, r.hbr_m, req.config, req.conjunction->earth, six, req.mc_exec, true);
+  const bool six = in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov;
+  r.choice = choose_pc(a, r.hbr_m, req.config, in.earth, six, req.mc_exec, true);
   r.pc = r.choice->pc;
   r.method = r.choice->method;
   if (!r.pc_mc && r.choice->mc) r.pc_mc = r.choice->mc;
@@ -231,10 +230,10 @@ AssessRequest encounter_plane_request(const PrincipalEncounter& plane, double hb
 }
 
 AssessResult run_assess(const AssessRequest& req) {
-  if (req.encounter_plane) return run_plane(req);
+  if (req.encounter_plane) return run_plane(req, *req.encounter_plane);
   if (!req.conjunction)
     throw std::invalid_argument("assess: no encounter given (states or an encounter plane)");
-  return run_states(req);
+  return run_states(req, *req.conjunction);
 }
 
 nlohmann::json to_json(const AssessResult& r) {
@@ -262,7 +261,7 @@ std::string to_text(const AssessResult& r) {
   char b[256];
   (void)std::snprintf(b, sizeof b, ": miss %.3f m, HBR %.3f m\n", r.miss_m, r.hbr_m);
   std::string t = r.source + b;
-  if (r.states) {
+  if (r.states && r.rel_speed_mps) {  // run_states sets both
     (void)std::snprintf(b, sizeof b,
                         "  at TCA (%+.6f s from the epoch of the given states): relative speed "
                         "%.3f m/s\n",

@@ -118,9 +118,11 @@ PcChoice event_pc(const ScreeningEvent& ev, const EventCdmOptions& opt) {
   ConjunctionInput in;
   in.hbr_m = opt.hbr_m;
   for (int i = 0; i < 2; ++i) {
+    const auto& cov_rtn = ev.obj[i].cov_rtn;
+    if (!cov_rtn) throw std::invalid_argument("CDM from event: the Pc needs both covariances");
     in.obj[i].name = ev.obj[i].name;
     in.obj[i].state = ev.obj[i].state_eme2000;
-    in.obj[i].cov_eci = cov_eci_from_rtn(*ev.obj[i].cov_rtn, in.obj[i].state);
+    in.obj[i].cov_eci = cov_eci_from_rtn(*cov_rtn, in.obj[i].state);
     in.obj[i].has_velocity_cov = true;
   }
   AssessConfig cfg = opt.assess;
@@ -147,7 +149,8 @@ void check_event(const ScreeningEvent& ev, const EventCdmOptions& opt, bool cov_
       throw std::invalid_argument("CDM from event: object " + std::to_string(i + 1) +
                                   ": OBJECT_DESIGNATOR is empty");
     check_finite(ev.obj[i].state_eme2000, who);
-    if (ev.obj[i].cov_rtn) check_cov(*ev.obj[i].cov_rtn, who);
+    const auto& cov_rtn = ev.obj[i].cov_rtn;
+    if (cov_rtn) check_cov(*cov_rtn, who);
   }
   if (cov_known && !(opt.hbr_m > 0.0 && std::isfinite(opt.hbr_m)))
     throw std::invalid_argument("CDM from event: covariances are known but the hard-body "

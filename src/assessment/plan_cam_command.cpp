@@ -149,8 +149,7 @@ std::string burn_text(const CamPlan& p) {
   return t;
 }
 
-std::string plan_text(const PlanCamResult& r) {
-  const CamPlan& p = *r.plan;
+std::string plan_text(const PlanCamResult& r, const CamPlan& p) {
   char b[256];
   (void)std::snprintf(b, sizeof b, ": burn %.1f s before TCA", p.lead_s);
   std::string t = r.source + b;
@@ -238,6 +237,6 @@ nlohmann::json to_json(const PlanCamResult& r) {
   return j;
 }
 
-std::string to_text(const PlanCamResult& r) { return r.plan ? plan_text(r) : sweep_csv(r); }
+std::string to_text(const PlanCamResult& r) { return r.plan ? plan_text(r, *r.plan) : sweep_csv(r); }
 
 }  // namespace evade::assessment

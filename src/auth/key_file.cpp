@@ -42,7 +42,7 @@ void check_private_file(const std::string& path) {
   if (!S_ISREG(st.st_mode)) throw std::runtime_error("key file '" + path + "': not a regular file");
   if ((st.st_mode & 077U) != 0) {
     char mode[8];
-    (void)std::snprintf(mode, sizeof(mode), "%04o", static_cast<unsigned>(st.st_mode & 07777U));
+    (void)std::snprintf(mode, sizeof(mode), "%04o", st.st_mode & 07777U);
     throw std::runtime_error("key file '" + path + "' has mode " + mode +
                              ": group or others may access it; chmod 600 it");
   }

@@ -61,7 +61,7 @@ ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double 
         double& fp = f_prev[i * n + j];
         if (fp < 0.0 && fc >= 0.0) {
           ++res.stats.root_solves;
-          const StateEci gi = prev[i], gj = prev[j];
+          const StateEci &gi = prev[i], &gj = prev[j];
           auto f = [&](double tt) {
             return internal::range_rate_product(eph.state_near(i, tt, gi, t_prev),
                                                 eph.state_near(j, tt, gj, t_prev));

@@ -89,6 +89,7 @@ ScreenOptions catalog_options(const ScreenCatalogRequest& req, const Sgp4Screeni
 
 std::vector<CatalogEvent> catalog_events(const ScreenResult& r, const Sgp4Screening& s) {
   std::vector<CatalogEvent> out;
+  out.reserve(r.events.size());
   for (const auto& c : r.events) {
     out.push_back({s.norad_ids[c.i], s.norad_ids[c.j], s.objects[c.i].name, s.objects[c.j].name,
                    c.tca_s, utc(s.start_j2000_s + c.tca_s), c.miss_m, c.rel_speed_mps});

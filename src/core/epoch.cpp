@@ -95,7 +95,7 @@ CalendarUtc parse_calendar_utc(const std::string& text) {
   CalendarUtc c;
   char sep = 0;
   int consumed = 0;
-  // NOLINTNEXTLINE(cert-err34-c): %4d/%2d cannot overflow; validate() range-checks the %lf
+  // NOLINTNEXTLINE(cert-err34-c,bugprone-unchecked-string-to-number-conversion): %4d/%2d cannot overflow; validate() range-checks the %lf
   const int n = std::sscanf(text.c_str(), "%4d-%2d-%2d%c%2d:%2d:%lf%n", &c.year, &c.month, &c.day,
                             &sep, &c.hour, &c.minute, &c.second, &consumed);
   if (n != 7 || (sep != ' ' && sep != 'T') || static_cast<size_t>(consumed) != text.size()) {

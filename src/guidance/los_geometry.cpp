@@ -3,6 +3,7 @@
 #include "evade/guidance/los_geometry.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace evade::guidance {
 
@@ -98,7 +99,7 @@ bool los_frame(const Vec3& u_eci, const Vec3& u_dot_eci_ps, const Vec3& r_sat_ec
     f.e_theta_eci = e_w.cross(e_r);
     f.fallback = true;
   }
-  *out = f;
+  *out = std::move(f);
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace evade::guidance_lcm {
 namespace {
@@ -214,7 +215,7 @@ bool from_lcm(const evade_burn_plan_t& m, BurnPlan* out) noexcept {
     o.objective_value = m.objective_value;
     o.evaluations = m.evaluations;
   }
-  *out = p;
+  *out = std::move(p);
   return true;
 }
 

@@ -35,7 +35,7 @@ std::int8_t auth_mask(const AuthPolicy& p) noexcept {
 
 }  // namespace
 
-static const NodeConfig& checked(const NodeConfig& cfg) {
+static NodeConfig checked(const NodeConfig& cfg) {  // copied into cfg_ at construction
   const std::string err = cfg.validate();
   if (!err.empty()) throw std::invalid_argument(err);
   return cfg;

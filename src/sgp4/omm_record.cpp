@@ -11,13 +11,13 @@ namespace evade::sgp4 {
 namespace {
 
 [[noreturn]] void fail(const std::string& source, const OmmValue& v, const std::string& expected) {
-  throw ReadError{ReadIssue{source, v.line, v.column, expected, v.text}};
+  throw ReadError(ReadIssue{source, v.line, v.column, expected, v.text});
 }
 
 const OmmValue& required(const OmmRecord& rec, const std::string& key, const std::string& source) {
   const auto it = rec.values.find(key);
   if (it == rec.values.end())
-    throw ReadError{ReadIssue{source, rec.line, 0, "keyword " + key + " in the entry beginning here", "none"}};
+    throw ReadError(ReadIssue{source, rec.line, 0, "keyword " + key + " in the entry beginning here", "none"});
   return it->second;
 }
 

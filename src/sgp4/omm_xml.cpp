@@ -39,7 +39,7 @@ class XmlParser {
  private:
   [[noreturn]] void fail(const std::string& expected) const {
     const std::string found = i_ < s_.size() ? s_.substr(i_, 12) : "end of file";
-    throw ReadError{ReadIssue{source_, line_, col_, expected, found}};
+    throw ReadError(ReadIssue{source_, line_, col_, expected, found});
   }
   bool at(const char* p) const { return s_.compare(i_, std::char_traits<char>::length(p), p) == 0; }
   void adv(std::size_t n = 1) {
@@ -169,9 +169,9 @@ void collect(const XmlNode& n, OmmRecord& rec, const std::string& source) {
       continue;
     }
     if (c->name == "COMMENT") continue;
-    if (!is_omm_keyword(c->name)) throw ReadError{ReadIssue{source, c->line, c->column, "an OMM keyword element", c->name}};
+    if (!is_omm_keyword(c->name)) throw ReadError(ReadIssue{source, c->line, c->column, "an OMM keyword element", c->name});
     if (rec.values.count(c->name))
-      throw ReadError{ReadIssue{source, c->line, c->column, "each keyword once per segment", c->name}};
+      throw ReadError(ReadIssue{source, c->line, c->column, "each keyword once per segment", c->name});
     const int l = c->text_line ? c->text_line : c->line, col = c->text_line ? c->text_column : c->column;
     rec.values[c->name] = OmmValue{trim(c->text), l, col};
   }

@@ -155,7 +155,10 @@ void compute_wave(const Plan& p, const std::vector<Task>& wave, int threads,
       run_task(p, wave[i], &(*outs)[i]);
   };
   if (wave.empty()) return;
-  if (threads == 1 || wave.size() == 1) return work(0);
+  if (threads == 1 || wave.size() == 1) {
+    work(0);
+    return;
+  }
   std::vector<std::thread> pool;
   for (int j = 1; j < threads; ++j) pool.emplace_back(work, static_cast<std::size_t>(j));
   work(0);
@@ -249,7 +252,7 @@ std::string to_text(const StreamedCatalog& r) {
       text += buf;
     }
     if (t.error != Sgp4Error::kNone) text += std::string(" (stopped: ") + sgp4_error_text(t.error) + ")";
-    text += "\n";
+    text += '\n';
   }
   return text;
 }

@@ -95,7 +95,10 @@ void propagate_grid(const Catalog& catalog, const StateGridRequest& req, const S
     for (std::size_t i = first; i < n; i += static_cast<std::size_t>(threads))
       propagate_object(catalog.objects[i], req, i, out);
   };
-  if (threads == 1) return work(0);
+  if (threads == 1) {
+    work(0);
+    return;
+  }
   std::vector<std::thread> pool;
   for (int j = 1; j < threads; ++j) pool.emplace_back(work, static_cast<std::size_t>(j));
   work(0);

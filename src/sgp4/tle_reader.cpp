@@ -31,7 +31,7 @@ class TleLine {
     return out;
   }
   [[noreturn]] void fail(int col, const std::string& expected, const std::string& found) const {
-    throw ReadError{ReadIssue{source_, line_no_, col, expected, found}};
+    throw ReadError(ReadIssue{source_, line_no_, col, expected, found});
   }
   void expect_blank(int col) const {
     if (cols(col, col) != " ") fail(col, "a blank in column " + std::to_string(col), cols(col, col));

@@ -18,7 +18,7 @@ Vec12 pack(const StateEci& sat, const StateEci& deb) {
 ThrustedTruth::ThrustedTruth(const SimConfig& cfg, SimResult* out)
     : cfg_(cfg),
       out_(*out),
-      integ_(typename Dop853<Vec12>::Rhs([this](double, const Vec12& x) { return derivative(x); }),
+      integ_(Dop853<Vec12>::Rhs([this](double, const Vec12& x) { return derivative(x); }),
              cfg.integrator),
       x_(pack(cfg.satellite0, cfg.debris0)) {
   eo_.direction = EventDirection::kRising;

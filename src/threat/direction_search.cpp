@@ -181,7 +181,9 @@ void certify(const ThreatAreaSolver& solver, double dv_mps, const EvasionOptions
 std::vector<int> pick_starts(const Box& b, const std::vector<double>& arc, int count) {
   std::vector<int> order(arc.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int c) { return arc[a] < arc[c]; });
+  // Ascending arc, ties in index order (what a stable sort gives; std::sort with the index as
+  // the tie-break avoids libstdc++'s deprecated temporary buffer).
+  std::sort(order.begin(), order.end(), [&](int a, int c) { return arc[a] < arc[c] || (!(arc[c] < arc[a]) && a < c); });
   std::vector<int> starts;
   for (int i : order) {
     if (static_cast<int>(starts.size()) >= count) break;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <nlopt.hpp>
 
@@ -156,7 +157,7 @@ EliminationResult find_eliminating_dv(const ThreatAreaSolver& solver, const Evas
   EvasionResult r;
   double lo = 0.0;
   if (eliminated(0.0, r)) {  // no threat even without evasion
-    out.best = r;
+    out.best = std::move(r);
     return out;
   }
   const double vmax = solver.options().dv_max_mps;

@@ -158,7 +158,7 @@ void run_slsqp(const Problem& prob, const SqpOptions& opt, const std::vector<dou
     o.optimize(x, f);
   } catch (const nlopt::roundoff_limited&) {
     // x holds the last iterate: still a valid plan, judged by its exact cost below.
-  } catch (const std::runtime_error&) {
+  } catch (const std::runtime_error&) {  // NOLINT(bugprone-empty-catch): see below
     // generic NLopt failure: x still holds a valid (if unconverged) plan.
   }
 }

@@ -86,8 +86,7 @@ void add_evasion_json(const ThreatStudy& s, bool use_isres, nlohmann::json& j) {
   j["search"] = search_json(r, use_isres);
 }
 
-void add_elimination_json(const ThreatStudy& s, nlohmann::json& j) {
-  const EliminationResult& e = *s.elimination;
+void add_elimination_json(const ThreatStudy& s, const EliminationResult& e, nlohmann::json& j) {
   j["eliminating_dv_mps"] = e.eliminating_dv_mps;
   j["eliminating_lower_bracket_mps"] = e.threatened_dv_mps;
   j["eliminating_alpha_rad"] = e.best.alpha_rad;
@@ -152,7 +151,7 @@ nlohmann::json to_json(const ThreatAreaResult& r) {
   const ThreatStudy& s = r.study;
   nlohmann::json j = summary_json(r);
   add_evasion_json(s, r.scenario.evasion.use_isres, j);
-  if (s.elimination) add_elimination_json(s, j);
+  if (s.elimination) add_elimination_json(s, *s.elimination, j);
   if (!s.sweep_dv.empty()) {
     j["sweep_dv"] = nlohmann::json::array();
     for (const auto& row : s.sweep_dv) j["sweep_dv"].push_back(burn_row_json(row));

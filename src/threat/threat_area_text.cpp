@@ -73,7 +73,7 @@ std::string sweep_transfer_text(const ThreatStudy& s) {
                 r.dt_transfer_s, r.j_t0_mps, r.cost_t0_mps[0], r.cost_t0_mps[1],
                 r.cost_t0_mps[2], r.t0_bound_mps);
     if (r.elimination) t += format_text(", eliminating V_E %.3f m/s", r.elimination->eliminating_dv_mps);
-    t += "\n";
+    t += '\n';
   }
   return t;
 }

@@ -3,7 +3,9 @@
 // at the first bad entry and never drops one silently.
 #pragma once
 
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "evade/sgp4/mean_elements.hpp"
@@ -28,7 +30,10 @@ struct Catalog {
 };
 
 /// Thrown by the single-entry parsers; the catalog readers catch it and record the issue.
-struct ReadError {
+/// A std::runtime_error whose what() is issue.message(), so a caller that catches
+/// std::exception (the CLI, the Python module) reports it too.
+struct ReadError : std::runtime_error {
+  explicit ReadError(ReadIssue i) : std::runtime_error(i.message()), issue(std::move(i)) {}
   ReadIssue issue;
 };
 
