@@ -44,13 +44,14 @@ double gravity_hessian_bound(double r_m, GravityModel model, const EarthModel& e
 }
 
 ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityModel model,
-                     const EarthModel& earth, double perturbation_mps2) {
+                     const EarthModel& earth, double perturbation_mps2, double velocity_error_mps) {
   // |r''| <= G(r) + perturbation at radius >= r.
   auto g_bound = [&](double r_m) { return gravity_bound_mps2(r_m, model, earth) + perturbation_mps2; };
-  // Lemma, first part: the tangent segment keeps the arc above rho_star.
+  // Lemma, first part: the tangent segment keeps the arc above rho_star. With a velocity
+  // known to within dv, r(t_a + s) departs from r_a + v_a s by at most dv s + G s^2 / 2.
   const double d_tan = segment_distance_m(a.r_eci_m, a.r_eci_m + h_s * a.v_eci_mps);
   const double rho0 = 0.5 * d_tan;
-  const double rho_star = d_tan - g_bound(rho0) * h_s * h_s / 2.0;
+  const double rho_star = d_tan - velocity_error_mps * h_s - g_bound(rho0) * h_s * h_s / 2.0;
   if (!(rho_star > rho0)) {
     throw std::runtime_error("arc_bounds: grid step " + std::to_string(h_s) +
                              " s too long for the arc bound (tangent distance " +
@@ -63,8 +64,10 @@ ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityMo
   out.r_hi_m = std::max(a.r_eci_m.norm(), b.r_eci_m.norm()) + chord_dev;
   out.g_max_mps2 = g_bound(out.r_lo_m);
   out.perturbation_mps2 = perturbation_mps2;
-  // |v(t)| <= min(|v_a| + g (t - t_a), |v_b| + g (t_b - t)) <= (|v_a| + |v_b| + g h) / 2.
-  out.v_max_mps = 0.5 * (a.v_eci_mps.norm() + b.v_eci_mps.norm() + out.g_max_mps2 * h_s);
+  // |v(t)| <= min(|v_a| + g (t - t_a), |v_b| + g (t_b - t)) <= (|v_a| + |v_b| + g h) / 2,
+  // plus dv for velocities known to within dv.
+  out.v_max_mps = 0.5 * (a.v_eci_mps.norm() + b.v_eci_mps.norm() + out.g_max_mps2 * h_s) +
+                  velocity_error_mps;
   return out;
 }
 

@@ -97,6 +97,14 @@ void Ephemeris::states_at(double t_s, std::size_t begin, std::size_t end, StateE
   }
 }
 
+void Ephemeris::grid_states_at(double t_s, std::size_t begin, std::size_t end, StateEci* out) {
+  if (!has_grid_states()) {
+    states_at(t_s, begin, end, out);
+    return;
+  }
+  for (std::size_t i = begin; i < end; ++i) out[i] = motion_->grid_state_at(i, t_s);
+}
+
 StepArcs Ephemeris::make_arcs() const {
   return StepArcs(n_, OrbitIntegrator(OrbitRhs{GravityModel::kTwoBodyJ2, earth_}, integ_));
 }

@@ -41,7 +41,8 @@ void Worker::update_step_bounds(const StateEci* sa, const StateEci* sb, double d
   if (opt->gravity != GravityModel::kTwoBodyJ2) return;  // conic bounds, set once
   for (std::size_t i = 0; i < step_bounds.size(); ++i) {
     const PerturbationBound pb = opt->motion ? opt->motion->perturbation(i) : PerturbationBound{};
-    step_bounds[i] = arc_bounds(sa[i], sb[i], dt, opt->gravity, opt->earth, pb.accel_mps2);
+    step_bounds[i] = arc_bounds(sa[i], sb[i], dt, opt->gravity, opt->earth, pb.accel_mps2,
+                                eph->grid_velocity_error_mps(i));
     step_bounds[i].perturbation_rate_mps3 = pb.rate_mps3;
   }
 }
@@ -91,10 +92,26 @@ void Worker::screen_cell(std::uint64_t key, const StateEci* sa, const StateEci* 
       const double d_ij = pair_threshold(i, j);
       if (!apogee_perigee_may_meet(step_bounds[i], step_bounds[j], d_ij)) continue;
       ++stats.candidates;
-      narrow_phase(i, j, Endpoint{t_a, sa[i], sa[j]}, Endpoint{t_b, sb[i], sb[j]}, sa[i], sa[j],
-                   t_a, d_ij, ctx, *eph, arcs, events, stats);
+      const StateEci &ai = exact(i, 0, sa, t_a), &aj = exact(j, 0, sa, t_a);
+      const StateEci &bi = exact(i, 1, sb, t_b), &bj = exact(j, 1, sb, t_b);
+      narrow_phase(i, j, Endpoint{t_a, ai, aj}, Endpoint{t_b, bi, bj}, ai, aj, t_a, d_ij, ctx,
+                   *eph, arcs, events, stats);
     }
   }
+}
+
+const StateEci& Worker::exact(std::size_t i, int end, const StateEci* grid_states, double t_s) {
+  if (!eph->has_grid_states()) return grid_states[i];
+  ExactStates& c = exact_states[static_cast<std::size_t>(end)];
+  if (c.state.size() != grid.lo.size()) {
+    c.state.resize(grid.lo.size());
+    c.step.assign(grid.lo.size(), -1);
+  }
+  if (c.step[i] != stats.steps) {
+    c.state[i] = eph->exact_state(i, t_s);
+    c.step[i] = stats.steps;
+  }
+  return c.state[i];
 }
 
 void Worker::screen_step(const StateEci* sa, const StateEci* sb, double t_a, double t_b) {

@@ -58,18 +58,11 @@ struct Envelope {
 Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
                          const sgp4::MeanElements& m, const Sgp4MotionOptions& opt,
                          const EarthModel& earth) {
-  const double period_s = 86400.0 / m.mean_motion_revpday;
-  const double e = std::clamp(m.eccentricity, 0.0, 0.99);
-  double dt = period_s * std::pow(1.0 - e, 1.5) / opt.samples_per_orbit;
-  long n = static_cast<long>(std::ceil(opt.span_s / dt)) + 1;
-  if (n > opt.max_samples) {
-    n = opt.max_samples;
-    dt = opt.span_s / static_cast<double>(n - 1);
-  }
+  const std::vector<double> times =
+      envelope_sample_times(86400.0 / m.mean_motion_revpday, m.eccentricity, opt);
   const double h = opt.accel_step_s;
   Envelope env;
-  for (long k = 0; k < n; ++k) {
-    const double t = std::min(static_cast<double>(k) * dt, opt.span_s);
+  for (const double t : times) {
     Position q[5];
     for (int m = 0; m < 5; ++m) {
       q[m] = position(p, offset_s + t + (m - 2) * h);
@@ -86,7 +79,39 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
   return env;
 }
 
+// Samples every dt over [t0, t1] (both ends included), appended to out.
+void append_samples(double t0, double t1, double dt, std::vector<double>& out) {
+  const long n = static_cast<long>(std::ceil((t1 - t0) / dt));
+  for (long k = 0; k <= n; ++k) out.push_back(std::min(t0 + static_cast<double>(k) * dt, t1));
+}
+
 }  // namespace
+
+std::vector<double> envelope_sample_times(double period_s, double eccentricity,
+                                          const Sgp4MotionOptions& opt) {
+  const double e = std::clamp(eccentricity, 0.0, 0.99);
+  const double span = opt.span_s, gap = opt.envelope_block_gap_s;
+  double dt = period_s * std::pow(1.0 - e, 1.5) / opt.samples_per_orbit;
+  std::vector<double> t;
+  if (gap > period_s && span > period_s) {  // one orbit every gap, and the last orbit
+    const long blocks = static_cast<long>(std::ceil((span - period_s) / gap));  // t0 < span - P
+    for (long b = 0; b < blocks; ++b) {
+      const double t0 = static_cast<double>(b) * gap;
+      append_samples(t0, t0 + period_s, dt, t);
+    }
+    append_samples(span - period_s, span, dt, t);
+  } else {
+    append_samples(0.0, span, dt, t);
+  }
+  if (static_cast<long>(t.size()) > opt.max_samples) {  // the cap, spread over the span
+    t.clear();
+    dt = span / static_cast<double>(opt.max_samples - 1);
+    append_samples(0.0, span, dt, t);
+  }
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
 
 void Sgp4MotionOptions::validate() const {
   auto fail = [](const char* key, double v, const char* range) {
@@ -97,6 +122,8 @@ void Sgp4MotionOptions::validate() const {
   if (!(span_s > 0.0) || !std::isfinite(span_s)) fail("span_s", span_s, "(0, inf)");
   if (!std::isfinite(start_j2000_s)) fail("start_j2000_s", start_j2000_s, "finite");
   if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
+  if (!(envelope_block_gap_s >= 0.0) || !std::isfinite(envelope_block_gap_s))
+    fail("envelope_block_gap_s", envelope_block_gap_s, "[0, inf)");
   validate_steps();
 }
 
@@ -143,6 +170,17 @@ StateEci Sgp4Motion::state_at(std::size_t i, double t_s) const {
                              fmt(t_s) + " s from the start");
   }
   return StateEci{b.r, (c.r - a.r) / (2.0 * tau)};
+}
+
+StateEci Sgp4Motion::grid_state_at(std::size_t i, double t_s) const {
+  const sgp4::Sgp4State s = props_[i].propagate_s(offset_s_[i] + t_s);
+  if (s.error != sgp4::Sgp4Error::kNone) return state_at(i, t_s);  // throws naming the error
+  return StateEci{s.r_teme_m, s.v_teme_mps};
+}
+
+double Sgp4Motion::grid_velocity_error_mps(std::size_t) const {
+  const EarthModel e = wgs72_earth();
+  return velocity_allowance_mps(std::sqrt(2.0 * e.mu_m3ps2 / e.re_m));
 }
 
 bool Sgp4Motion::acceleration_at(std::size_t i, double t_s, Vec3& a_mps2, double& error_mps2) const {

@@ -111,7 +111,7 @@ void StepRunner::advance(long k_from, long k_to, long k_row0) {
       const std::size_t e = std::min(n, b + kChunk);
       for (long k = k_from; k <= k_to; ++k) {
         std::vector<StateEci>& row = rows_[static_cast<std::size_t>(std::max(k - k_row0, 0L))];
-        eph_.states_at(grid_time(k), b, e, row.data());
+        eph_.grid_states_at(grid_time(k), b, e, row.data());
       }
     }
   });

@@ -43,7 +43,11 @@ struct ArcBounds {
 /// when the lemma's condition fails (a step far too long for the orbit). perturbation_mps2:
 /// a bound on |r'' - a(r)| of a motion that is not exactly the field's (SGP4 motion,
 /// motion_source.hpp); the lemma then holds with G(r) + perturbation_mps2 in place of G(r).
+/// velocity_error_mps: a bound on |v - r'| of the velocities of a and b (grid states with
+/// SGP4's own velocity, MotionSource::grid_state_at): the tangent segment then departs from
+/// the arc by a further velocity_error_mps x h_s, and v_max grows by it.
 ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityModel model,
-                     const EarthModel& earth, double perturbation_mps2 = 0.0);
+                     const EarthModel& earth, double perturbation_mps2 = 0.0,
+                     double velocity_error_mps = 0.0);
 
 }  // namespace evade::conjunction

@@ -49,6 +49,16 @@ class MotionSource {
     (void)i;
     return 0.0;
   }
+  /// A cheaper state for the broad phase's grid (SGP4: its own velocity, one evaluation
+  /// instead of the three of state_at's central difference), whose velocity may differ from
+  /// r' by up to grid_velocity_error_mps(i); the position is state_at's. Default: state_at.
+  /// Thread-safe; throws as state_at.
+  virtual StateEci grid_state_at(std::size_t i, double t_s) const { return state_at(i, t_s); }
+  /// A bound on |v - r'| for grid_state_at (default: velocity_error_mps(i)).
+  virtual double grid_velocity_error_mps(std::size_t i) const { return velocity_error_mps(i); }
+  /// True when grid_state_at is not state_at: the screener then takes the states the narrow
+  /// phase starts from from state_at, and the grid's only for the boxes and arc bounds.
+  virtual bool has_grid_states() const { return false; }
   /// The Earth model the perturbation is measured against; the screener must use it.
   virtual EarthModel reference_earth() const = 0;
   /// The frame of the states ("TEME", "J2000"), for reports.

@@ -20,7 +20,7 @@
 // range rate, so d stays above D up to the positive root of that quadratic; the jump is the
 // larger of the two. |r''| <= A = 1.01 mu / r_lo^2 + 1e-3 m/s^2: J2 adds at most 4.9e-3 of
 // mu / r^2 and SGP4's other terms at most 3e-4 m/s^2 (sampled; the envelope's assumption
-// S1, docs/VALIDATION.md); eps = velocity_allowance_mps (below), against what is measured.
+// S1, docs/VALIDATION.md); eps = velocity_allowance_mps (sgp4_motion.hpp), against what is measured.
 //
 // Speed bound (derived, with margin; checked, as the perturbation envelope is): vis-viva
 // v^2 = mu (2/r - 1/a) with r >= r_lo, the proven (near-Earth) or sampled (deep space)
@@ -38,21 +38,14 @@
 
 #include <Eigen/Core>
 
+#include "evade/conjunction/sgp4_motion.hpp"
 #include "evade/sgp4/sgp4.hpp"
 
 namespace evade::conjunction {
 
 /// A sampled SGP4 speed this close to the bound disables the filter for the object [m/s].
 constexpr double kSpeedCheckMarginMps = 1.0;
-/// Allowed |SGP4 velocity - d/dt SGP4 position| of an object: kVelocityAllowanceMps +
-/// kVelocityAllowanceFraction x its speed bound (measured: 0.1 m/s in LEO, 2.6 m/s at the
-/// perigee of 12-hour HEO orbits, where SDP4's velocity leaves out its resonance and
-/// lunar-solar rates: 2.6e-4 of the speed).
-constexpr double kVelocityAllowanceMps = 1.0;
-constexpr double kVelocityAllowanceFraction = 1e-3;
-inline double velocity_allowance_mps(double speed_bound_mps) {
-  return kVelocityAllowanceMps + kVelocityAllowanceFraction * speed_bound_mps;
-}
+// velocity_allowance_mps (SGP4's own velocity against d/dt of its position): sgp4_motion.hpp.
 
 struct TimeFilterOptions {
   double threshold_m = 5000.0;  ///< D [m]

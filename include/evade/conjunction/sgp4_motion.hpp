@@ -41,6 +41,17 @@
 
 namespace evade::conjunction {
 
+/// Allowed |SGP4 velocity - d/dt SGP4 position| of an object: kVelocityAllowanceMps +
+/// kVelocityAllowanceFraction x its speed bound (measured: 0.1 m/s in LEO, 2.6 m/s at the
+/// perigee of 12-hour HEO orbits, where SDP4's velocity leaves out its resonance and
+/// lunar-solar rates: 2.6e-4 of the speed). Used by the time filter
+/// (primary_time_filter.hpp) and for the broad phase's grid states (grid_state_at below).
+constexpr double kVelocityAllowanceMps = 1.0;
+constexpr double kVelocityAllowanceFraction = 1e-3;
+inline double velocity_allowance_mps(double speed_bound_mps) {
+  return kVelocityAllowanceMps + kVelocityAllowanceFraction * speed_bound_mps;
+}
+
 struct Sgp4MotionOptions {
   double span_s = 86400.0;        ///< screened span from the start [s]
   bool start_at_latest_epoch = true;
@@ -50,6 +61,13 @@ struct Sgp4MotionOptions {
   double accel_step_s = 5.0;      ///< step h of the acceleration's 5-point difference [s]
   int samples_per_orbit = 64;     ///< perturbation envelope samples (times (1 - e)^-1.5)
   long max_samples = 20000;       ///< cap per object (spread over the span)
+  /// The envelope is sampled over one orbit (samples_per_orbit samples) every
+  /// envelope_block_gap_s from the start, and over the span's last orbit, rather than over
+  /// every orbit; 0 (or a gap not longer than the orbit): every orbit. The largest |p| of an
+  /// orbit changes on the time scales of the orbit's slow motion (apsides and node: weeks;
+  /// drag: grows with time, hence the last orbit; lunar-solar terms: days), checked in
+  /// docs/VALIDATION.md against every orbit sampled [s].
+  double envelope_block_gap_s = 21600.0;
   double envelope_factor = 2.0;   ///< accel_mps2 = factor x largest sample + floor
   double envelope_floor_mps2 = 5e-6;
   double object_size_m = 0.0;     ///< SpaceObject::size_m given to every object
@@ -86,6 +104,13 @@ class Sgp4Motion : public MotionSource {
   bool acceleration_at(std::size_t i, double t_s, Vec3& a_mps2, double& error_mps2) const override;
   /// tau^2 n_max^3 r_max / 3 + 4e-12 r_max / tau (truncation with a factor 2; the jumps).
   double velocity_error_mps(std::size_t i) const override { return v_err_mps_[i]; }
+  /// One SGP4 evaluation with SGP4's own velocity (state_at takes three: the central
+  /// difference). Throws as state_at.
+  StateEci grid_state_at(std::size_t i, double t_s) const override;
+  /// velocity_allowance_mps of the escape speed at the Earth's radius, sqrt(2 mu / Re) =
+  /// 11.2 km/s (no accepted object is faster: every perigee is above Re): 12.2 m/s.
+  double grid_velocity_error_mps(std::size_t i) const override;
+  bool has_grid_states() const override { return true; }
   EarthModel reference_earth() const override;
   std::string frame() const override { return "TEME"; }
 
@@ -117,6 +142,12 @@ struct Sgp4Screening {
   std::vector<RejectedElementSet> rejected;
   double start_j2000_s = 0.0;
 };
+
+/// The times (from the start) at which the perturbation envelope of an orbit with this
+/// period and eccentricity is sampled over [0, span] (Sgp4MotionOptions: samples_per_orbit,
+/// max_samples, envelope_block_gap_s), ascending.
+std::vector<double> envelope_sample_times(double period_s, double eccentricity,
+                                          const Sgp4MotionOptions& opt);
 
 /// Builds the screening of `elements` (the catalog's entries, in order).
 Sgp4Screening sgp4_screening(const std::vector<sgp4::MeanElements>& elements,

@@ -42,6 +42,17 @@ struct Worker {
   std::array<std::vector<double>, 6> cell_box;  // lo x, y, z, hi x, y, z
   std::array<std::vector<std::int32_t>, 3> cell_low;  // lowest cell x, y, z
   std::vector<unsigned char> overlap;
+  // With cheaper grid states (Ephemeris::has_grid_states): the exact states the narrow phase
+  // starts from, computed for the objects of candidate pairs only, at the step's start (0)
+  // and end (1); step[i] is the step (stats.steps) state[i] belongs to.
+  struct ExactStates {
+    std::vector<StateEci> state;
+    std::vector<long> step;
+  };
+  std::array<ExactStates, 2> exact_states;
+  // The exact state of object i at the step's start (end 0) or end (1): grid_states[i] when
+  // the grid states are exact, else Ephemeris::exact_state, once per object and step.
+  const StateEci& exact(std::size_t i, int end, const StateEci* grid_states, double t_s);
 
   // D_ij = max(D, N R_c(i, j)) (warning_radius_m of types.hpp, from the per-object sums).
   double pair_threshold(std::size_t i, std::size_t j) const {
