@@ -35,7 +35,14 @@ Worker::Worker(const std::vector<SpaceObject>& objects_in, const ScreenOptions& 
       d_max(d_max_in),
       arcs(eph_in.make_arcs()),
       step_bounds(std::move(conic_bounds)),
-      size_m(std::move(object_size_m)) {}
+      size_m(std::move(object_size_m)) {
+  if (eph->has_grid_states()) {
+    for (ExactStates& c : exact_states) {
+      c.state.resize(step_bounds.size());
+      c.step.assign(step_bounds.size(), -1);
+    }
+  }
+}
 
 void Worker::update_step_bounds(const StateEci* sa, const StateEci* sb, double dt) {
   if (opt->gravity != GravityModel::kTwoBodyJ2) return;  // conic bounds, set once
@@ -102,11 +109,7 @@ void Worker::screen_cell(std::uint64_t key, const StateEci* sa, const StateEci* 
 
 const StateEci& Worker::exact(std::size_t i, int end, const StateEci* grid_states, double t_s) {
   if (!eph->has_grid_states()) return grid_states[i];
-  ExactStates& c = exact_states[static_cast<std::size_t>(end)];
-  if (c.state.size() != grid.lo.size()) {
-    c.state.resize(grid.lo.size());
-    c.step.assign(grid.lo.size(), -1);
-  }
+  ExactStates& c = exact_states[static_cast<std::size_t>(end)];  // sized by the constructor
   if (c.step[i] != stats.steps) {
     c.state[i] = eph->exact_state(i, t_s);
     c.step[i] = stats.steps;

@@ -179,8 +179,11 @@ StateEci Sgp4Motion::grid_state_at(std::size_t i, double t_s) const {
 }
 
 double Sgp4Motion::grid_velocity_error_mps(std::size_t) const {
-  const EarthModel e = wgs72_earth();
-  return velocity_allowance_mps(std::sqrt(2.0 * e.mu_m3ps2 / e.re_m));
+  static const double kErrorMps = [] {  // the same for every object: computed once
+    const EarthModel e = wgs72_earth();
+    return velocity_allowance_mps(std::sqrt(2.0 * e.mu_m3ps2 / e.re_m));
+  }();
+  return kErrorMps;
 }
 
 bool Sgp4Motion::acceleration_at(std::size_t i, double t_s, Vec3& a_mps2, double& error_mps2) const {

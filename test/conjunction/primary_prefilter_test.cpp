@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "evade/conjunction/primary_prefilter.hpp"
@@ -21,12 +19,7 @@
 namespace evade::conjunction {
 namespace {
 
-sgp4::Catalog shipped() {
-  std::ifstream in(EVADE_SYNTHETIC_CATALOG);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return sgp4::read_catalog(os.str(), "synthetic-1200.tle");
-}
+sgp4::Catalog shipped() { return testing::shipped_catalog(); }
 
 ScreenCatalogResult screen(const sgp4::Catalog& cat, long primary, double span_s, bool prefilter,
                            double threshold_m = 5000.0) {

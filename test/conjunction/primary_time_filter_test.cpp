@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,12 +18,7 @@
 namespace evade::conjunction {
 namespace {
 
-std::vector<sgp4::MeanElements> shipped() {
-  std::ifstream in(EVADE_SYNTHETIC_CATALOG);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return sgp4::read_catalog(os.str(), "synthetic-1200.tle").objects;
-}
+std::vector<sgp4::MeanElements> shipped() { return testing::shipped_catalog().objects; }
 
 // An object of the filter, over [start, start + span].
 struct Bound {

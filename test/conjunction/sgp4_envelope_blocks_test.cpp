@@ -8,24 +8,15 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
-#include <string>
 #include <vector>
 
 #include "evade/conjunction/sgp4_motion.hpp"
-#include "evade/sgp4/catalog.hpp"
 #include "sgp4_test_catalog.hpp"
 
 namespace evade::conjunction {
 namespace {
 
-std::vector<sgp4::MeanElements> shipped() {
-  std::ifstream in(EVADE_SYNTHETIC_CATALOG);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return sgp4::read_catalog(os.str(), "synthetic-1200.tle").objects;
-}
+std::vector<sgp4::MeanElements> shipped() { return testing::shipped_catalog().objects; }
 
 TEST(EnvelopeSampleTimes, EveryOrbitWhenTheGapIsZeroOneOrbitPerGapOtherwise) {
   Sgp4MotionOptions o;

@@ -8,10 +8,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "evade/sgp4/catalog.hpp"
 #include "evade/sgp4/mean_elements.hpp"
 
 namespace evade::conjunction::testing {
@@ -82,5 +85,16 @@ inline std::vector<sgp4::MeanElements> sgp4_test_catalog(const Sgp4TestCatalogOp
   for (int k = 0; k < o.crossing_pairs; ++k) meeting_pair("cx", k, 20.0, 90.0);
   return out;
 }
+
+#ifdef EVADE_SYNTHETIC_CATALOG
+/// The shipped catalog scenarios/catalogs/synthetic-1200.tle (LEO, MEO, GEO, HEO; SGP4 and
+/// SDP4), read as the CLI reads it (EVADE_SYNTHETIC_CATALOG: its path, from CMake).
+inline sgp4::Catalog shipped_catalog() {
+  std::ifstream in(EVADE_SYNTHETIC_CATALOG);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return sgp4::read_catalog(os.str(), "synthetic-1200.tle");
+}
+#endif
 
 }  // namespace evade::conjunction::testing
