@@ -80,14 +80,41 @@ struct PairEphemeris {
   }
 };
 
-// Relative motion on one interval [a, b] and the bounds of robust_screen.hpp: R_max on
-// |rho| and A on |rho''| (the smaller of g_i + g_j and the gravity-gradient bound).
+// The bounds of robust_screen.hpp on one interval [a, b] of length len, from the positions
+// only: R_max on |rho| and A on |rho''| (the smaller of g_i + g_j and the gravity-gradient
+// bound), and the lower bound on |rho| over [a, b] (the chord's distance minus A len^2 / 8).
+struct DistanceBound {
+  double r_max = 0.0;
+  double acc = 0.0;
+  double r_seg = 0.0;  // lower bound on the radius along the segment between the objects
+  double lower_m = 0.0;
+};
+
+DistanceBound distance_bound(const Vec3& rho_a, const Vec3& rho_b, double len, const NarrowPair& p,
+                             const ScreenOptions& opt) {
+  DistanceBound d;
+  const double chord_dev_crude = p.a_crude * len * len / 8.0;
+  d.r_max = std::max(rho_a.norm(), rho_b.norm()) + chord_dev_crude;
+  // Gravity-gradient bound: |g(r_j) - g(r_i)| <= (2 mu / r^3) |rho| along the segment
+  // between the two objects, whose radius is >= r_min - r_max (K(r): arc_bounds.hpp).
+  d.acc = p.a_crude;
+  d.r_seg = p.r_min - d.r_max;
+  if (d.r_seg > 0.0) {
+    const double k_grad = gravity_gradient_bound_ps2(d.r_seg, opt.gravity, opt.earth);
+    d.acc = std::min(d.acc, k_grad * d.r_max + p.p_sum);
+  }
+  d.lower_m = segment_distance_m(rho_a, rho_b) - d.acc * len * len / 8.0;
+  return d;
+}
+
+// Relative motion on one interval [a, b] and its DistanceBound.
 struct IntervalGeometry {
   double len = 0.0;
   Vec3 rho_a, rho_b, vel_a, vel_b;
   double r_max = 0.0;
   double acc = 0.0;
-  double r_seg = 0.0;  // lower bound on the radius along the segment between the objects
+  double r_seg = 0.0;
+  double lower_m = 0.0;
 };
 
 IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const NarrowPair& p,
@@ -98,16 +125,11 @@ IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const N
   g.rho_b = b.sj.r_eci_m - b.si.r_eci_m;
   g.vel_a = a.sj.v_eci_mps - a.si.v_eci_mps;
   g.vel_b = b.sj.v_eci_mps - b.si.v_eci_mps;
-  const double chord_dev_crude = p.a_crude * g.len * g.len / 8.0;
-  g.r_max = std::max(g.rho_a.norm(), g.rho_b.norm()) + chord_dev_crude;
-  // Gravity-gradient bound: |g(r_j) - g(r_i)| <= (2 mu / r^3) |rho| along the segment
-  // between the two objects, whose radius is >= r_min - r_max (K(r): arc_bounds.hpp).
-  g.acc = p.a_crude;
-  g.r_seg = p.r_min - g.r_max;
-  if (g.r_seg > 0.0) {
-    const double k_grad = gravity_gradient_bound_ps2(g.r_seg, opt.gravity, opt.earth);
-    g.acc = std::min(g.acc, k_grad * g.r_max + p.p_sum);
-  }
+  const DistanceBound d = distance_bound(g.rho_a, g.rho_b, g.len, p, opt);
+  g.r_max = d.r_max;
+  g.acc = d.acc;
+  g.r_seg = d.r_seg;
+  g.lower_m = d.lower_m;
   return g;
 }
 
@@ -209,6 +231,15 @@ double range_rate_product(const StateEci& si, const StateEci& sj) {
   return (sj.r_eci_m - si.r_eci_m).dot(sj.v_eci_mps - si.v_eci_mps);
 }
 
+bool may_come_within(std::size_t i, std::size_t j, const StepPositions& s, double d_ij,
+                     const PairContext& ctx, ScreenStats& st) {
+  const NarrowPair p = narrow_pair(i, j, d_ij, ctx);
+  const Vec3 rho_a = s.rj_a - s.ri_a, rho_b = s.rj_b - s.ri_b;
+  if (distance_bound(rho_a, rho_b, s.len_s, p, *ctx.opt).lower_m <= d_ij) return true;
+  ++st.refined;  // the narrow phase's first interval, decided here
+  return false;
+}
+
 // Narrow phase on one grid step for pair (i, j): branch and bound on [a, b] (see
 // robust_screen.hpp). Returns events through `out`.
 void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const Endpoint& end,
@@ -225,8 +256,7 @@ void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const End
     stack.pop_back();
     ++st.refined;
     const IntervalGeometry g = interval_geometry(a, b, p, opt);
-    const double lower_bound = segment_distance_m(g.rho_a, g.rho_b) - g.acc * g.len * g.len / 8.0;
-    if (lower_bound > d_ij) continue;
+    if (g.lower_m > d_ij) continue;
     const Monotonicity m = range_rate_monotonicity(a, b, g, p, opt);
     if (m.decreasing) continue;  // f strictly decreasing: no - to + root, no closest approach
     if (!m.monotone && g.len <= opt.leaf_s) ++st.unproven_leaves;

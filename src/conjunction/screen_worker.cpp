@@ -99,6 +99,8 @@ void Worker::screen_cell(std::uint64_t key, const StateEci* sa, const StateEci* 
       const double d_ij = pair_threshold(i, j);
       if (!apogee_perigee_may_meet(step_bounds[i], step_bounds[j], d_ij)) continue;
       ++stats.candidates;
+      const StepPositions pos{sa[i].r_eci_m, sa[j].r_eci_m, sb[i].r_eci_m, sb[j].r_eci_m, t_b - t_a};
+      if (!may_come_within(i, j, pos, d_ij, ctx, stats)) continue;
       const StateEci &ai = exact(i, 0, sa, t_a), &aj = exact(j, 0, sa, t_a);
       const StateEci &bi = exact(i, 1, sb, t_b), &bj = exact(j, 1, sb, t_b);
       narrow_phase(i, j, Endpoint{t_a, ai, aj}, Endpoint{t_b, bi, bj}, ai, aj, t_a, d_ij, ctx,

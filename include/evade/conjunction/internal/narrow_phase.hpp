@@ -33,6 +33,23 @@ struct Endpoint {
 // f = rho.rho', rho = r_j - r_i: the range rate times the range.
 double range_rate_product(const StateEci& si, const StateEci& sj);
 
+// The positions of a pair at both ends of a grid step of length len_s.
+struct StepPositions {
+  const Vec3& ri_a;
+  const Vec3& rj_a;
+  const Vec3& ri_b;
+  const Vec3& rj_b;
+  double len_s;
+};
+
+// The narrow phase's first test on the step from the positions alone: false when the lower
+// bound on |rho| over the step exceeds d_ij, so narrow_phase would find nothing (that
+// interval is counted in st.refined). The worker passes the grid states' positions (which
+// are the exact states', MotionSource::grid_state_at) and computes the exact states only for
+// the pairs that pass.
+bool may_come_within(std::size_t i, std::size_t j, const StepPositions& s, double d_ij,
+                     const PairContext& ctx, ScreenStats& st);
+
 // Narrow phase on one grid step for pair (i, j): branch and bound on [a, b] (see
 // robust_screen.hpp). Returns events through `out`.
 void narrow_phase(std::size_t i, std::size_t j, const Endpoint& start, const Endpoint& end,
