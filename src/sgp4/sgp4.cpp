@@ -149,6 +149,9 @@ Sgp4Propagator::Sgp4Propagator(const Sgp4Elements& el, OperationMode mode,
       ds_ = deep_space_init(ep_);
     }
   }
+  sin_inclo_ = std::sin(el_.inclo_rad);
+  cos_inclo_ = std::cos(el_.inclo_rad);
+  am_near_ = std::pow(k_.xke_per_min / no_unkozai_, kX2o3);
   init_error_ = propagate_min(0.0).error;
 }
 
@@ -270,7 +273,7 @@ Sgp4State Sgp4Propagator::propagate_min(double t) const noexcept {
   m.inclm = el_.inclo_rad;
   if (deep_) deep_space_secular(ds_, ep_, t, m);
   if (m.nm <= 0.0) return failed(Sgp4Error::kMeanMotion);
-  const double am = std::pow(k_.xke_per_min / m.nm, kX2o3) * tempa * tempa;
+  const double am = (deep_ ? std::pow(k_.xke_per_min / m.nm, kX2o3) : am_near_) * tempa * tempa;
   const double nm = k_.xke_per_min / std::pow(am, 1.5);
   double em = m.em - tempe;
   if (em >= 1.0 || em < -0.001) return failed(Sgp4Error::kMeanEccentricity);
@@ -297,7 +300,8 @@ Sgp4State Sgp4Propagator::propagate_min(double t) const noexcept {
 
 Sgp4State Sgp4Propagator::position_velocity(const PerturbedElements& p, double am,
                                             double nm) const noexcept {
-  const double sinip = std::sin(p.inclp), cosip = std::cos(p.inclp);
+  const double sinip = deep_ ? std::sin(p.inclp) : sin_inclo_;
+  const double cosip = deep_ ? std::cos(p.inclp) : cos_inclo_;
   const Short c = short_period(sinip, cosip);
   // Long-period periodics and Kepler's equation.
   const double axnl = p.ep * std::cos(p.argpp);

@@ -101,6 +101,10 @@ class Sgp4Propagator {
   double omgcof_ = 0, sinmao_ = 0, t2cof_ = 0, t3cof_ = 0, t4cof_ = 0, t5cof_ = 0;
   double xmcof_ = 0, nodecf_ = 0;
   Short near_{};  // short-period coefficients at epoch inclination
+  // Near-Earth constants of every call, computed once exactly as propagate_min would
+  // (the inclination and the Kozai-free mean motion do not change without deep space).
+  double sin_inclo_ = 0.0, cos_inclo_ = 1.0;
+  double am_near_ = 0.0;  // (xke / no_unkozai)^(2/3)
   Sgp4Error init_error_ = Sgp4Error::kNone;
 };
 
