@@ -146,7 +146,8 @@ PrimaryWindowScreen screen_primary_windows(const std::vector<sgp4::MeanElements>
   if (!whole.rejected.empty())  // the primary over the whole span, as the full screen checks it
     throw primary_rejected(primary_norad, whole.rejected[0].reason);
   ScreenOptions so = screen;
-  if (!(so.step_s > 0.0)) so.step_s = auto_step_s(out.screening.objects.size());
+  if (!(so.step_s > 0.0))
+    so.step_s = auto_step_s(out.screening.objects.size(), out.screening.motion->has_grid_states());
   out.step_s = so.step_s;
   const Job job{&elements, &out.screening, pi, start_j2000_s, span_s, &so, &filter};
   const std::vector<ObjectResult> res = run_objects(job);

@@ -158,7 +158,7 @@ long count_primary_pairs(const std::vector<ObjectBounds>& bounds, long primary, 
 }  // namespace
 
 long screen_grid_steps(double span_s, const ScreenOptions& opt, std::size_t n_objects) {
-  const double step = opt.step_s == 0.0 ? auto_step_s(n_objects) : opt.step_s;
+  const double step = opt.step_s == 0.0 ? auto_step_s(n_objects, opt) : opt.step_s;
   return static_cast<long>(std::ceil(span_s / step - 1e-12));
 }
 
@@ -166,7 +166,7 @@ ScreenResult screen_robust_part(const std::vector<SpaceObject>& objects, double 
                                 const ScreenOptions& opt_in, int part, int parts) {
   opt_in.validate();
   ScreenOptions opt = opt_in;
-  if (opt.step_s == 0.0) opt.step_s = auto_step_s(objects.size());
+  if (opt.step_s == 0.0) opt.step_s = auto_step_s(objects.size(), opt);
   if (!(span_s > 0.0) || !std::isfinite(span_s)) {
     throw std::invalid_argument("span_s = " + std::to_string(span_s) + " outside (0, inf)");
   }

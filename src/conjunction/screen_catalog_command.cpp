@@ -113,7 +113,7 @@ ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const Sgp4Sc
   if (so.primary >= 0) res.primary_norad = req.primary_norad;
   res.threads = so.threads;
   res.ranks = req.ranks;
-  res.grid_step_s = so.step_s > 0.0 ? so.step_s : auto_step_s(s.objects.size());
+  res.grid_step_s = so.step_s > 0.0 ? so.step_s : auto_step_s(s.objects.size(), so);
   return res;
 }
 

@@ -21,7 +21,7 @@ const Param<ScreenOptions> kScreenOptionRows[] = {
     EVADE_PARAM_REAL(ScreenOptions, threshold_m, "m", 0.0, 1e8, false,
                      "D: report every closest approach with miss <= max(D, N R_c)"),
     EVADE_PARAM_REAL(ScreenOptions, step_s, "s", 0.0, 1e5, false,
-                     "grid step h of the broad phase (0: auto_step_s(N))"),
+                     "grid step h of the broad phase (0: auto_step_s(N, motion))"),
     EVADE_PARAM_REAL(ScreenOptions, leaf_s, "s", 1e-6, 1e5, false,
                      "smallest subdivision of the narrow phase"),
 };
@@ -59,9 +59,14 @@ void ScreenOptions::validate() const {
   integ.validate();
 }
 
-double auto_step_s(std::size_t n_objects) {
+double auto_step_s(std::size_t n_objects, bool grid_states) {
   const double n = static_cast<double>(std::max<std::size_t>(n_objects, 1));
-  return std::clamp(60.0 * std::cbrt(10000.0 / n), 10.0, 120.0);
+  const double h_10k_s = grid_states ? kAutoStepGridStates_s : kAutoStepForceModels_s;
+  return std::clamp(h_10k_s * std::cbrt(10000.0 / n), 10.0, 120.0);
+}
+
+double auto_step_s(std::size_t n_objects, const ScreenOptions& opt) {
+  return auto_step_s(n_objects, opt.motion && opt.motion->has_grid_states());
 }
 
 }  // namespace evade::conjunction

@@ -154,5 +154,17 @@ TEST(Sgp4Screening, MotionNeedsItsReferenceEarthModel) {
   EXPECT_THROW(opt.validate(), std::invalid_argument);
 }
 
+TEST(Sgp4Screening, AutomaticGridStepUsesTheGridStatesCalibration) {
+  // h = h_10k (10 000 / N)^(1/3), clamped to [10, 120] s; SGP4 motion has grid states.
+  const Sgp4Screening s = sgp4_screening(sgp4_test_catalog(small_catalog(7)), Sgp4MotionOptions{});
+  const ScreenOptions sgp4 = sgp4_options(s);
+  const ScreenOptions force_model;
+  EXPECT_DOUBLE_EQ(auto_step_s(10000, sgp4), kAutoStepGridStates_s);
+  EXPECT_DOUBLE_EQ(auto_step_s(10000, force_model), kAutoStepForceModels_s);
+  EXPECT_NEAR(auto_step_s(30000, sgp4), kAutoStepGridStates_s / std::cbrt(3.0), 1e-9);
+  EXPECT_DOUBLE_EQ(auto_step_s(500, sgp4), 120.0);
+  EXPECT_DOUBLE_EQ(auto_step_s(100000000, force_model), 10.0);
+}
+
 }  // namespace
 }  // namespace evade::conjunction

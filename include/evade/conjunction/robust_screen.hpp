@@ -99,10 +99,18 @@ struct ScreenResult {
 };
 
 /// Grid step balancing propagation (~N per step) against pair tests (~N^2 h^3 per step):
-/// cost per span ~ N/h + N^2 h^2 is smallest for h ~ N^(-1/3). Calibrated on this machine:
-/// 60 s was best at N = 10 000 (docs/PERFORMANCE.md);
-/// h = 60 (10 000/N)^(1/3) s, clamped to [10, 120] s.
-double auto_step_s(std::size_t n_objects);
+/// cost per span ~ N/h + N^2 h^2 is smallest for h ~ N^(-1/3), so
+/// h = h_10k (10 000/N)^(1/3) s, clamped to [10, 120] s. h_10k, calibrated on this machine
+/// (docs/PERFORMANCE.md): kAutoStepForceModels_s for two-body and J2 (60 s was best at
+/// N = 10 000); kAutoStepGridStates_s for a motion source with grid states (SGP4: one
+/// evaluation per object and step, and a candidate pair costs a position-only test before
+/// any exact state; 60 s was best at N = 30 000, about 110 s at N = 5 000).
+constexpr double kAutoStepForceModels_s = 60.0;
+constexpr double kAutoStepGridStates_s = 86.5;
+double auto_step_s(std::size_t n_objects, bool grid_states = false);
+
+/// auto_step_s for the objects and motion of opt (grid states when opt.motion has them).
+double auto_step_s(std::size_t n_objects, const ScreenOptions& opt);
 
 /// Screens [0, span_s]. Objects are validated first (std::invalid_argument on bad input).
 ScreenResult screen_robust(const std::vector<SpaceObject>& objects, double span_s,
