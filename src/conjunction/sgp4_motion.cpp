@@ -48,10 +48,18 @@ Position position(const sgp4::Sgp4Propagator& p, double t_s) {
   return out;
 }
 
-// Largest sampled |r'' - a(r)| of one object over [0, span] (t counted from the start), or
-// the first SGP4 error met (reason non-empty).
+// Largest angular rate of an orbit, n (1 + e)^2 / (1 - e^2)^1.5 (at perigee) [rad/s].
+double n_max_radps(const sgp4::MeanElements& m) {
+  const double e = std::min(m.eccentricity, 0.99);
+  const double n_radps = m.mean_motion_revpday * 2.0 * kPi / 86400.0;
+  return n_radps * (1.0 + e) * (1.0 + e) / std::pow(1.0 - e * e, 1.5);
+}
+
+// Largest sampled |r'' - a(r)| of one object over [0, span] (t counted from the start) and
+// the largest error of those samples, or the first SGP4 error met (reason non-empty).
 struct Envelope {
   double p_max_mps2 = 0.0;
+  double error_mps2 = 0.0;
   std::string reason;
 };
 
@@ -60,21 +68,25 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
                          const EarthModel& earth) {
   const std::vector<double> times =
       envelope_sample_times(86400.0 / m.mean_motion_revpday, m.eccentricity, opt);
-  const double h = opt.accel_step_s;
+  const double h = opt.envelope_step_s;
+  const double n2 = n_max_radps(m) * n_max_radps(m);
   Envelope env;
   for (const double t : times) {
-    Position q[5];
-    for (int m = 0; m < 5; ++m) {
-      q[m] = position(p, offset_s + t + (m - 2) * h);
-      if (!q[m].ok) {
-        env.reason = q[m].error + " at t = " + fmt(t + (m - 2) * h) + " s from the start";
+    Position q[3];
+    for (int k = 0; k < 3; ++k) {
+      q[k] = position(p, offset_s + t + (k - 1) * h);
+      if (!q[k].ok) {
+        env.reason = q[k].error + " at t = " + fmt(t + (k - 1) * h) + " s from the start";
         return env;
       }
     }
-    // Five-point second difference: truncation h^4 |r^(6)| / 90.
-    const Vec3 acc = (-q[0].r + 16.0 * q[1].r - 30.0 * q[2].r + 16.0 * q[3].r - q[4].r) / (12.0 * h * h);
-    const Vec3 pert = acc - accel_eci_mps2(q[2].r, GravityModel::kTwoBodyJ2, earth);
+    // Three-point second difference: truncation h^2 |r| / 12, |r| taken as
+    // 4 n_max^4 |r|; each position within the jumps 4e-12 |r| (sgp4_motion.hpp), 4 of them.
+    const Vec3 acc = (q[0].r - 2.0 * q[1].r + q[2].r) / (h * h);
+    const Vec3 pert = acc - accel_eci_mps2(q[1].r, GravityModel::kTwoBodyJ2, earth);
+    const double r = q[1].r.norm();
     env.p_max_mps2 = std::max(env.p_max_mps2, pert.norm());
+    env.error_mps2 = std::max(env.error_mps2, 4.0 * n2 * n2 * r * h * h / 12.0 + 16e-12 * r / (h * h));
   }
   return env;
 }
@@ -136,6 +148,8 @@ void Sgp4MotionOptions::validate_steps() const {
   if (!(velocity_step_s > 0.0 && velocity_step_s <= 1.0))
     fail("velocity_step_s", velocity_step_s, "(0, 1]");
   if (!(accel_step_s > 0.0 && accel_step_s <= 10.0)) fail("accel_step_s", accel_step_s, "(0, 10]");
+  if (!(envelope_step_s > 0.0 && envelope_step_s <= 10.0))
+    fail("envelope_step_s", envelope_step_s, "(0, 10]");
   if (samples_per_orbit < 8 || samples_per_orbit > 100000)
     fail("samples_per_orbit", samples_per_orbit, "[8, 100000]");
   if (max_samples < 2) fail("max_samples", static_cast<double>(max_samples), "[2, inf)");
@@ -272,9 +286,9 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   }
   const double e = std::min(m.eccentricity, 0.99);
   const double n_radps = m.mean_motion_revpday * 2.0 * kPi / 86400.0;
-  const double n_max = n_radps * (1.0 + e) * (1.0 + e) / std::pow(1.0 - e * e, 1.5);
+  const double n_max = n_max_radps(m);
   PerturbationBound b;
-  b.accel_mps2 = opt.envelope_factor * env.p_max_mps2 + opt.envelope_floor_mps2;
+  b.accel_mps2 = opt.envelope_factor * (env.p_max_mps2 + env.error_mps2) + opt.envelope_floor_mps2;
   b.rate_mps3 = 4.0 * n_max * b.accel_mps2;
   if (!opt.envelopes) b.accel_mps2 = b.rate_mps3 = std::numeric_limits<double>::infinity();
   mo.bounds_.push_back(b);
