@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "evade/conjunction/internal/narrow_phase.hpp"
 
 namespace evade::conjunction::internal {
@@ -81,16 +83,21 @@ void Worker::screen_cell(std::uint64_t key, const StateEci* sa, const StateEci* 
   const double* hy = cell_box[4].data();
   const double* hz = cell_box[5].data();
   overlap.resize(m);
-  unsigned char* ov = overlap.data();
+  double* ov = overlap.data();
+  using Side = Eigen::Map<const Eigen::ArrayXd>;
   for (std::size_t p = 0; p < m; ++p) {
     stats.pairs_checked += static_cast<long>(m - p - 1);
-    // Box overlap of p with every later member (branch-free, so the compiler vectorizes it).
+    // Box overlap of p with every later member: the smallest over the axes of
+    // min(hi_p, hi_q) - max(lo_p, lo_q), >= 0 exactly when the boxes overlap (Eigen's packets,
+    // so it is vectorized at any optimization level).
+    const std::size_t q0 = p + 1;
+    const auto len = static_cast<Eigen::Index>(m - q0);
+    auto side = [&](const double* lo, const double* hi) {
+      return Side(hi + q0, len).min(hi[p]) - Side(lo + q0, len).max(lo[p]);
+    };
+    Eigen::Map<Eigen::ArrayXd>(ov + q0, len) = side(lx, hx).min(side(ly, hy)).min(side(lz, hz));
     for (std::size_t q = p + 1; q < m; ++q) {
-      ov[q] = static_cast<unsigned char>((lx[p] <= hx[q]) & (lx[q] <= hx[p]) & (ly[p] <= hy[q]) &
-                                         (ly[q] <= hy[p]) & (lz[p] <= hz[q]) & (lz[q] <= hz[p]));
-    }
-    for (std::size_t q = p + 1; q < m; ++q) {
-      if (!ov[q] || !opt->screens_pair(cell_obj[p], cell_obj[q])) continue;
+      if (!(ov[q] >= 0.0) || !opt->screens_pair(cell_obj[p], cell_obj[q])) continue;
       if (std::max(cell_low[0][p], cell_low[0][q]) != cx ||
           std::max(cell_low[1][p], cell_low[1][q]) != cy ||
           std::max(cell_low[2][p], cell_low[2][q]) != cz)

@@ -41,7 +41,7 @@ struct Worker {
   std::vector<std::uint32_t> cell_obj;
   std::array<std::vector<double>, 6> cell_box;  // lo x, y, z, hi x, y, z
   std::array<std::vector<std::int32_t>, 3> cell_low;  // lowest cell x, y, z
-  std::vector<unsigned char> overlap;
+  std::vector<double> overlap;  // smallest overlap of the boxes' sides (>= 0: they overlap) [m]
   // With cheaper grid states (Ephemeris::has_grid_states): the exact states the narrow phase
   // starts from, computed for the objects of candidate pairs only, at the step's start (0)
   // and end (1); step[i] is the step (stats.steps) state[i] belongs to.
