@@ -5,7 +5,10 @@
 // (zes, zel, c1ss, c1l, the Q and G resonance coefficients, fasx*, g**) are the theory's.
 #include "evade/sgp4/deep_space.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "evade/sgp4/sgp4.hpp"
 
@@ -318,6 +321,30 @@ ResonanceRates resonance_rates(const Resonance& r, const DeepSpaceEpoch& ep, dou
   return k;
 }
 
+// One step of dspace's loop from state s with the rates k there (delt = +-720 min).
+ResonanceCheckpoint resonance_step(const ResonanceCheckpoint& s, const ResonanceRates& k,
+                                   double delt) {
+  ResonanceCheckpoint n;
+  n.xli = s.xli + k.xldot * delt + k.xndt * kStep2;
+  n.xni = s.xni + k.xndt * delt + k.xnddt * kStep2;
+  n.atime = s.atime + delt;
+  return n;
+}
+
+// The states of dspace's loop after 0, 1, ... steps toward t > 0, up to the horizon.
+std::vector<ResonanceCheckpoint> resonance_checkpoints(const Resonance& r,
+                                                       const DeepSpaceEpoch& ep) {
+  const auto n = static_cast<std::size_t>(kResonanceCheckpointHorizonMin / kStep);
+  std::vector<ResonanceCheckpoint> c;
+  c.reserve(n + 1);
+  c.push_back(ResonanceCheckpoint{0.0, r.xlamo, ep.no_unkozai});
+  for (std::size_t k = 0; k < n; ++k) {
+    const ResonanceCheckpoint& s = c.back();
+    c.push_back(resonance_step(s, resonance_rates(r, ep, s.xli, s.xni, s.atime), kStep));
+  }
+  return c;
+}
+
 }  // namespace
 
 DeepSpaceTerms deep_space_init(const DeepSpaceEpoch& ep) {
@@ -335,6 +362,7 @@ DeepSpaceTerms deep_space_init(const DeepSpaceEpoch& ep) {
   const double aonv = std::pow(nm / ep.xke, 2.0 / 3.0);
   if (irez == 2) half_day_resonance(ep, d.o, aonv, theta, ds);
   if (irez == 1) synchronous_resonance(ep, d.o, aonv, theta, ds);
+  ds.checkpoints = resonance_checkpoints(ds.resonance, ep);
   return ds;
 }
 
@@ -348,21 +376,27 @@ void deep_space_secular(const DeepSpaceTerms& ds, const DeepSpaceEpoch& ep, doub
   m.mm += ds.dmdt * t;
   const Resonance& r = ds.resonance;
   if (r.irez == 0) return;
-  double atime = 0.0, xni = ep.no_unkozai, xli = r.xlamo, ft = 0.0;
+  ResonanceCheckpoint s{0.0, r.xlamo, ep.no_unkozai};
+  double ft = 0.0;
   const double delt = t > 0.0 ? kStep : -kStep;
+  // The loop below passes step j without stopping while t - 720 j >= 720: start from the
+  // checkpoint floor(t / 720) - 1 (at most the last one), which is the loop's own state there.
+  const double passed = std::floor(t / kStep) - 1.0;
+  if (t > 0.0 && passed >= 1.0 && !ds.checkpoints.empty()) {
+    const double last = static_cast<double>(ds.checkpoints.size() - 1);
+    s = ds.checkpoints[static_cast<std::size_t>(std::min(passed, last))];
+  }
   ResonanceRates k{};
-  for (;;) {
-    k = resonance_rates(r, ep, xli, xni, atime);
-    if (std::fabs(t - atime) < kStep) {
-      ft = t - atime;
+  for (;;) {  // at most 2 steps after a checkpoint within the horizon
+    k = resonance_rates(r, ep, s.xli, s.xni, s.atime);
+    if (std::fabs(t - s.atime) < kStep) {
+      ft = t - s.atime;
       break;
     }
-    xli = xli + k.xldot * delt + k.xndt * kStep2;
-    xni = xni + k.xndt * delt + k.xnddt * kStep2;
-    atime = atime + delt;
+    s = resonance_step(s, k, delt);
   }
-  const double nm = xni + k.xndt * ft + k.xnddt * ft * ft * 0.5;
-  const double xl = xli + k.xldot * ft + k.xndt * ft * ft * 0.5;
+  const double nm = s.xni + k.xndt * ft + k.xnddt * ft * ft * 0.5;
+  const double xl = s.xli + k.xldot * ft + k.xndt * ft * ft * 0.5;
   if (r.irez != 1) {
     m.mm = xl - 2.0 * m.nodem + 2.0 * theta;
   } else {

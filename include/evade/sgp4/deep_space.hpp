@@ -6,9 +6,15 @@
 // radians. Written from the paper's description and its published equations.
 #pragma once
 
+#include <vector>
+
 namespace evade::sgp4 {
 
 enum class OperationMode : char;
+
+/// How far from the epoch the resonance checkpoints reach (60 days; later times resume from
+/// the last one) [min].
+constexpr double kResonanceCheckpointHorizonMin = 86400.0;
 
 /// Coefficients of the lunar-solar periodic terms (dscom outputs kept for dpper).
 struct LunarSolarPeriodics {
@@ -29,9 +35,20 @@ struct Resonance {
   double xfact = 0, xlamo = 0;
 };
 
+/// The resonance integrator's state after a whole number of 720 min steps from the epoch.
+struct ResonanceCheckpoint {
+  double atime = 0;  ///< min from epoch
+  double xli = 0;
+  double xni = 0;
+};
+
 struct DeepSpaceTerms {
   LunarSolarPeriodics periodics;
   Resonance resonance;
+  /// Resonant orbits: the integrator's state after k = 0, 1, ... steps toward t > 0, over
+  /// the first kResonanceCheckpointHorizonMin (dspace's own loop, run once at initialisation
+  /// so that a call at t resumes from the last whole step before it; empty otherwise).
+  std::vector<ResonanceCheckpoint> checkpoints;
   double dedt = 0, didt = 0, dmdt = 0, dnodt = 0, domdt = 0;  ///< lunar-solar secular rates
 };
 
@@ -55,8 +72,9 @@ struct DeepSpaceMean {
 };
 
 /// dspace: lunar-solar secular terms and resonance integration from epoch to t (min).
-/// Stateless: always integrates from epoch, which gives the reference's numbers bit for bit
-/// (its stored integrator state restarts on the same 720 min grid).
+/// Stateless: integrates from epoch on the reference's 720 min grid (its stored integrator
+/// state restarts on the same grid), resuming from ds.checkpoints, which hold that same
+/// loop's states, so the numbers are the reference's bit for bit.
 void deep_space_secular(const DeepSpaceTerms& ds, const DeepSpaceEpoch& ep, double t_min,
                         DeepSpaceMean& m);
 
