@@ -91,6 +91,13 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
   return env;
 }
 
+// Throws std::invalid_argument naming an Sgp4MotionOptions field, its value and its range.
+[[noreturn]] void fail_option(const char* key, double v, const char* range) {
+  std::ostringstream os;
+  os << "sgp4 motion: " << key << " = " << v << " outside " << range;
+  throw std::invalid_argument(os.str());
+}
+
 // Samples every dt over [t0, t1] (both ends included), appended to out.
 void append_samples(double t0, double t1, double dt, std::vector<double>& out) {
   const long n = static_cast<long>(std::ceil((t1 - t0) / dt));
@@ -126,39 +133,33 @@ std::vector<double> envelope_sample_times(double period_s, double eccentricity,
 }
 
 void Sgp4MotionOptions::validate() const {
-  auto fail = [](const char* key, double v, const char* range) {
-    std::ostringstream os;
-    os << "sgp4 motion: " << key << " = " << v << " outside " << range;
-    throw std::invalid_argument(os.str());
-  };
-  if (!(span_s > 0.0) || !std::isfinite(span_s)) fail("span_s", span_s, "(0, inf)");
-  if (!std::isfinite(start_j2000_s)) fail("start_j2000_s", start_j2000_s, "finite");
-  if (threads < 1 || threads > 256) fail("threads", threads, "[1, 256]");
+  if (!(span_s > 0.0) || !std::isfinite(span_s)) fail_option("span_s", span_s, "(0, inf)");
+  if (!std::isfinite(start_j2000_s)) fail_option("start_j2000_s", start_j2000_s, "finite");
+  if (threads < 1 || threads > 256) fail_option("threads", threads, "[1, 256]");
   if (!(envelope_block_gap_s >= 0.0) || !std::isfinite(envelope_block_gap_s))
-    fail("envelope_block_gap_s", envelope_block_gap_s, "[0, inf)");
+    fail_option("envelope_block_gap_s", envelope_block_gap_s, "[0, inf)");
   validate_steps();
 }
 
 void Sgp4MotionOptions::validate_steps() const {
-  auto fail = [](const char* key, double v, const char* range) {
-    std::ostringstream os;
-    os << "sgp4 motion: " << key << " = " << v << " outside " << range;
-    throw std::invalid_argument(os.str());
-  };
   if (!(velocity_step_s > 0.0 && velocity_step_s <= 1.0))
-    fail("velocity_step_s", velocity_step_s, "(0, 1]");
-  if (!(accel_step_s > 0.0 && accel_step_s <= 10.0)) fail("accel_step_s", accel_step_s, "(0, 10]");
-  if (!(envelope_step_s > 0.0 && envelope_step_s <= 10.0))
-    fail("envelope_step_s", envelope_step_s, "(0, 10]");
+    fail_option("velocity_step_s", velocity_step_s, "(0, 1]");
+  if (!(accel_step_s > 0.0 && accel_step_s <= 10.0)) fail_option("accel_step_s", accel_step_s, "(0, 10]");
   if (samples_per_orbit < 8 || samples_per_orbit > 100000)
-    fail("samples_per_orbit", samples_per_orbit, "[8, 100000]");
-  if (max_samples < 2) fail("max_samples", static_cast<double>(max_samples), "[2, inf)");
-  if (!(envelope_factor >= 1.0) || !std::isfinite(envelope_factor))
-    fail("envelope_factor", envelope_factor, "[1, inf)");
-  if (!(envelope_floor_mps2 >= 0.0) || !std::isfinite(envelope_floor_mps2))
-    fail("envelope_floor_mps2", envelope_floor_mps2, "[0, inf)");
+    fail_option("samples_per_orbit", samples_per_orbit, "[8, 100000]");
+  if (max_samples < 2) fail_option("max_samples", static_cast<double>(max_samples), "[2, inf)");
   if (!(object_size_m >= 0.0) || !std::isfinite(object_size_m))
-    fail("object_size_m", object_size_m, "[0, inf)");
+    fail_option("object_size_m", object_size_m, "[0, inf)");
+  validate_envelope();
+}
+
+void Sgp4MotionOptions::validate_envelope() const {
+  if (!(envelope_step_s > 0.0 && envelope_step_s <= 10.0))
+    fail_option("envelope_step_s", envelope_step_s, "(0, 10]");
+  if (!(envelope_factor >= 1.0) || !std::isfinite(envelope_factor))
+    fail_option("envelope_factor", envelope_factor, "[1, inf)");
+  if (!(envelope_floor_mps2 >= 0.0) || !std::isfinite(envelope_floor_mps2))
+    fail_option("envelope_floor_mps2", envelope_floor_mps2, "[0, inf)");
 }
 
 std::string RejectedElementSet::message() const { return label(norad_id, name) + ": " + reason; }

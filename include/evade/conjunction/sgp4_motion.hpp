@@ -86,6 +86,7 @@ struct Sgp4MotionOptions {
 
  private:
   void validate_steps() const;
+  void validate_envelope() const;
 };
 
 /// An element set left out of the screening, and why.
