@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "evade/sgp4/sgp4.hpp"
@@ -376,6 +377,10 @@ void deep_space_secular(const DeepSpaceTerms& ds, const DeepSpaceEpoch& ep, doub
   m.mm += ds.dmdt * t;
   const Resonance& r = ds.resonance;
   if (r.irez == 0) return;
+  if (!std::isfinite(t)) {  // the loop below would never reach t: no mean motion (NaN)
+    m.nm = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
   ResonanceCheckpoint s{0.0, r.xlamo, ep.no_unkozai};
   double ft = 0.0;
   const double delt = t > 0.0 ? kStep : -kStep;

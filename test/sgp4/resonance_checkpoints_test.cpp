@@ -3,7 +3,9 @@
 // resonances, before, inside and beyond the checkpoints' horizon.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "evade/sgp4/deep_space.hpp"
 
@@ -58,6 +60,17 @@ TEST(ResonanceCheckpoints, SynchronousOrbitGivesTheLoopsNumbersBitForBit) {
 
 TEST(ResonanceCheckpoints, HalfDayOrbitGivesTheLoopsNumbersBitForBit) {
   expect_same_as_loop_from_epoch(resonant_epoch(718.0, 0.72, 1.1065), 2);
+}
+
+TEST(ResonanceCheckpoints, NonFiniteTimeEndsWithoutAMeanMotionInsteadOfLoopingForever) {
+  const DeepSpaceEpoch ep = resonant_epoch(1436.0, 0.0004, 0.02);
+  const DeepSpaceTerms ds = deep_space_init(ep);
+  for (const double t : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    DeepSpaceMean m;
+    m.nm = ep.no_unkozai;
+    deep_space_secular(ds, ep, t, m);
+    EXPECT_TRUE(std::isnan(m.nm));
+  }
 }
 
 TEST(ResonanceCheckpoints, NoneWithoutResonance) {
