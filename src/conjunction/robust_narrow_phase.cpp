@@ -108,13 +108,9 @@ DistanceBound distance_bound(const Vec3& rho_a, const Vec3& rho_b, double len, c
 }
 
 // Relative motion on one interval [a, b] and its DistanceBound.
-struct IntervalGeometry {
+struct IntervalGeometry : DistanceBound {
   double len = 0.0;
   Vec3 rho_a, rho_b, vel_a, vel_b;
-  double r_max = 0.0;
-  double acc = 0.0;
-  double r_seg = 0.0;
-  double lower_m = 0.0;
 };
 
 IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const NarrowPair& p,
@@ -125,11 +121,7 @@ IntervalGeometry interval_geometry(const Endpoint& a, const Endpoint& b, const N
   g.rho_b = b.sj.r_eci_m - b.si.r_eci_m;
   g.vel_a = a.sj.v_eci_mps - a.si.v_eci_mps;
   g.vel_b = b.sj.v_eci_mps - b.si.v_eci_mps;
-  const DistanceBound d = distance_bound(g.rho_a, g.rho_b, g.len, p, opt);
-  g.r_max = d.r_max;
-  g.acc = d.acc;
-  g.r_seg = d.r_seg;
-  g.lower_m = d.lower_m;
+  static_cast<DistanceBound&>(g) = distance_bound(g.rho_a, g.rho_b, g.len, p, opt);
   return g;
 }
 

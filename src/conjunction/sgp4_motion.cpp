@@ -69,7 +69,7 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
   const std::vector<double> times =
       envelope_sample_times(86400.0 / m.mean_motion_revpday, m.eccentricity, opt);
   const double h = opt.envelope_step_s;
-  const double n2 = n_max_radps(m) * n_max_radps(m);
+  const double n_max = n_max_radps(m), n2 = n_max * n_max;
   Envelope env;
   for (const double t : times) {
     Position q[3];
@@ -80,7 +80,7 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
         return env;
       }
     }
-    // Three-point second difference: truncation h^2 |r| / 12, |r| taken as
+    // Three-point second difference: truncation h^2 |r''''| / 12, |r''''| taken as
     // 4 n_max^4 |r|; each position within the jumps 4e-12 |r| (sgp4_motion.hpp), 4 of them.
     const Vec3 acc = (q[0].r - 2.0 * q[1].r + q[2].r) / (h * h);
     const Vec3 pert = acc - accel_eci_mps2(q[1].r, GravityModel::kTwoBodyJ2, earth);
