@@ -1,8 +1,8 @@
 // `evade screen --tle FILE | --omm FILE [--primary ID] [--span-s S] [--threshold-m D]
 // [--step-s H] [--start UTC] [--threads N] [--json]`: reads the file (the only input I/O),
 // screens it by conjunction::run_screen_catalog and prints its JSON or text. Under
-// `mpirun -np N` the grid steps are split between the ranks (distributed_screen.hpp) and
-// rank 0 prints the merged result.
+// `mpirun -np N` the perturbation envelopes of the setup and the grid steps are split between
+// the ranks (distributed_screen.hpp) and rank 0 prints the merged result.
 #include "cmd_screen_catalog.hpp"
 
 #include <cstdio>
@@ -34,11 +34,13 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   if (!o.quiet && lead) req.progress = to_stderr;
   req.ranks = mpi.size();
   req.rank = mpi.rank();
-  if (mpi.size() > 1)  // else the time filter may run (it is not split between ranks)
+  if (mpi.size() > 1) {  // else the time filter may run (it is not split between ranks)
     req.robust_screener = [&mpi](const std::vector<conjunction::SpaceObject>& objects, double span_s,
-                               const conjunction::ScreenOptions& so) {
-    return distributed::screen_distributed(objects, span_s, so, mpi);
-  };
+                                 const conjunction::ScreenOptions& so) {
+      return distributed::screen_distributed(objects, span_s, so, mpi);
+    };
+    req.sum_over_ranks = [&mpi](std::vector<double>& v) { distributed::sum_over_ranks(v, mpi); };
+  }
   const conjunction::ScreenCatalogResult r = conjunction::run_screen_catalog(req);
   if (!lead) return 0;  // rank 0 holds the merged result
   if (r.cdm) write_cdm_files(*r.cdm);

@@ -45,6 +45,11 @@ Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
   mo.threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   mo.start_at_latest_epoch = false;
   mo.start_j2000_s = screen_start_j2000_s(req);
+  if (req.ranks > 1 && req.sum_over_ranks) {  // each rank samples its share of the envelopes
+    mo.part = req.rank;
+    mo.parts = req.ranks;
+    mo.sum_over_parts = req.sum_over_ranks;
+  }
   std::vector<sgp4::MeanElements> kept;
   const bool filter = req.prefilter && req.primary_norad >= 0;
   if (filter) {
@@ -114,6 +119,7 @@ ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const Sgp4Sc
   res.threads = so.threads;
   res.ranks = req.ranks;
   res.grid_step_s = so.step_s > 0.0 ? so.step_s : auto_step_s(s.objects.size(), so);
+  res.envelopes_sampled = s.envelopes_sampled;
   return res;
 }
 
@@ -257,6 +263,7 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
                 {"threads", r.threads},
                 {"ranks", r.ranks},
                 {"grid_step_s", r.grid_step_s}};
+  j["envelopes_sampled"] = r.envelopes_sampled;
   j["motion_setup_wall_s"] = r.motion_setup_wall_s;
   j["screen_wall_s"] = r.screen_wall_s;
   nlohmann::json ev = nlohmann::json::array();

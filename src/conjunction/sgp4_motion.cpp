@@ -56,11 +56,17 @@ double n_max_radps(const sgp4::MeanElements& m) {
 }
 
 // Largest sampled |r'' - a(r)| of one object over [0, span] (t counted from the start) and
-// the largest error of those samples, or the first SGP4 error met (reason non-empty).
+// the largest error of those samples, or the first SGP4 error met and its sample time.
 struct Envelope {
   double p_max_mps2 = 0.0;
   double error_mps2 = 0.0;
-  std::string reason;
+  sgp4::Sgp4Error failure = sgp4::Sgp4Error::kNone;
+  double failed_at_s = 0.0;
+  std::string reason() const {
+    if (failure == sgp4::Sgp4Error::kNone) return {};
+    return "SGP4 error " + std::to_string(static_cast<int>(failure)) + " (" + sgp4::sgp4_error_text(failure) +
+           ") at t = " + fmt(failed_at_s) + " s from the start";
+  }
 };
 
 Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
@@ -72,19 +78,21 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
   const double n_max = n_max_radps(m), n2 = n_max * n_max;
   Envelope env;
   for (const double t : times) {
-    Position q[3];
+    Vec3 q[3];
     for (int k = 0; k < 3; ++k) {
-      q[k] = position(p, offset_s + t + (k - 1) * h);
-      if (!q[k].ok) {
-        env.reason = q[k].error + " at t = " + fmt(t + (k - 1) * h) + " s from the start";
+      const sgp4::Sgp4State s = p.propagate_s(offset_s + t + (k - 1) * h);
+      if (s.error != sgp4::Sgp4Error::kNone) {
+        env.failure = s.error;
+        env.failed_at_s = t + (k - 1) * h;
         return env;
       }
+      q[k] = s.r_teme_m;
     }
-    // Three-point second difference: truncation h^2 |r''''| / 12, |r''''| taken as
+// Three-point second difference: truncation h^2 |r''''| / 12, |r''''| taken as
     // 4 n_max^4 |r|; each position within the jumps 4e-12 |r| (sgp4_motion.hpp), 4 of them.
-    const Vec3 acc = (q[0].r - 2.0 * q[1].r + q[2].r) / (h * h);
-    const Vec3 pert = acc - accel_eci_mps2(q[1].r, GravityModel::kTwoBodyJ2, earth);
-    const double r = q[1].r.norm();
+    const Vec3 acc = (q[0] - 2.0 * q[1] + q[2]) / (h * h);
+    const Vec3 pert = acc - accel_eci_mps2(q[1], GravityModel::kTwoBodyJ2, earth);
+    const double r = q[1].norm();
     env.p_max_mps2 = std::max(env.p_max_mps2, pert.norm());
     env.error_mps2 = std::max(env.error_mps2, 4.0 * n2 * n2 * r * h * h / 12.0 + 16e-12 * r / (h * h));
   }
@@ -139,6 +147,14 @@ void Sgp4MotionOptions::validate() const {
   if (!(envelope_block_gap_s >= 0.0) || !std::isfinite(envelope_block_gap_s))
     fail_option("envelope_block_gap_s", envelope_block_gap_s, "[0, inf)");
   validate_steps();
+  validate_parts();
+}
+
+void Sgp4MotionOptions::validate_parts() const {
+  if (parts < 1) fail_option("parts", parts, "[1, inf)");
+  if (part < 0 || part >= parts) fail_option("part", part, "[0, parts)");
+  if (parts > 1 && !sum_over_parts)
+    throw std::invalid_argument("sgp4 motion: parts = " + std::to_string(parts) + " needs sum_over_parts");
 }
 
 void Sgp4MotionOptions::validate_steps() const {
@@ -224,20 +240,53 @@ struct Sgp4CatalogBuilder {
                             const Sgp4MotionOptions& opt, const Envelope& env, SpaceObject& obj);
 };
 
-// Each element set's perturbation envelope (the setup's cost, independent per object), on
-// opt.threads threads (object k on thread k mod threads); an element set that does not
-// initialise keeps an empty envelope (accept names its error).
+// The envelopes as Sgp4MotionOptions::sum_over_parts exchanges them (kEnvelopeRecord
+// doubles each; the error code is a small integer, exact in a double).
+std::vector<double> envelope_records(const std::vector<Envelope>& env) {
+  std::vector<double> v(env.size() * kEnvelopeRecord, 0.0);
+  for (std::size_t k = 0; k < env.size(); ++k) {
+    double* r = &v[k * kEnvelopeRecord];
+    r[0] = env[k].p_max_mps2;
+    r[1] = env[k].error_mps2;
+    r[2] = static_cast<double>(static_cast<int>(env[k].failure));
+    r[3] = env[k].failed_at_s;
+  }
+  return v;
+}
+
+std::vector<Envelope> envelopes_from_records(const std::vector<double>& v, std::size_t n) {
+  if (v.size() != n * kEnvelopeRecord)
+    throw std::logic_error("sgp4 motion: sum_over_parts changed the envelope vector's size");
+  std::vector<Envelope> env(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double* r = &v[k * kEnvelopeRecord];
+    env[k].p_max_mps2 = r[0];
+    env[k].error_mps2 = r[1];
+    env[k].failure = static_cast<sgp4::Sgp4Error>(static_cast<int>(r[2]));
+    env[k].failed_at_s = r[3];
+  }
+  return env;
+}
+
+// Each element set's perturbation envelope (the setup's cost, independent per object): this
+// process's share (k mod parts == part) on opt.threads threads (its j-th element set on
+// thread j mod threads), then the other processes' through sum_over_parts; an element set
+// that does not initialise keeps an empty envelope (accept names its error).
 std::vector<Envelope> envelopes(const std::vector<sgp4::MeanElements>& elements, double start_s,
-                                const Sgp4MotionOptions& opt) {
+                                const Sgp4MotionOptions& opt, long* sampled) {
   std::vector<Envelope> env(elements.size());
   const EarthModel earth = wgs72_earth();
+  *sampled = 0;
   if (!opt.envelopes) return env;
+  const std::size_t parts = static_cast<std::size_t>(opt.parts);
+  std::vector<std::size_t> mine;
+  for (std::size_t k = static_cast<std::size_t>(opt.part); k < elements.size(); k += parts) mine.push_back(k);
   const auto work = [&](std::size_t first, std::size_t stride) {
-    for (std::size_t k = first; k < elements.size(); k += stride) {
-      const sgp4::MeanElements& m = elements[k];
+    for (std::size_t j = first; j < mine.size(); j += stride) {
+      const sgp4::MeanElements& m = elements[mine[j]];
       const sgp4::Sgp4Propagator prop(m, opt.mode);
       if (prop.init_error() != sgp4::Sgp4Error::kNone || !(m.mean_motion_revpday > 0.0)) continue;
-      env[k] = sample_envelope(prop, start_s - sgp4::epoch_seconds_since_j2000(m), m, opt, earth);
+      env[mine[j]] = sample_envelope(prop, start_s - sgp4::epoch_seconds_since_j2000(m), m, opt, earth);
     }
   };
   const std::size_t threads = static_cast<std::size_t>(std::max(1, opt.threads));
@@ -245,7 +294,11 @@ std::vector<Envelope> envelopes(const std::vector<sgp4::MeanElements>& elements,
   for (std::size_t j = 1; j < threads; ++j) pool.emplace_back(work, j, threads);
   work(0, threads);
   for (std::thread& t : pool) t.join();
-  return env;
+  *sampled = static_cast<long>(mine.size());
+  if (parts == 1) return env;
+  std::vector<double> records = envelope_records(env);
+  opt.sum_over_parts(records);
+  return envelopes_from_records(records, elements.size());
 }
 
 // Adds one element set to the motion, or returns why it is rejected.
@@ -260,7 +313,7 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   if (!(m.mean_motion_revpday > 0.0)) return "mean motion " + fmt(m.mean_motion_revpday) + " rev/day <= 0";
   const EarthModel earth = wgs72_earth();
   const double offset_s = start_s - sgp4::epoch_seconds_since_j2000(m);
-  if (!env.reason.empty()) return env.reason;
+  if (env.failure != sgp4::Sgp4Error::kNone) return env.reason();
   mo.props_.push_back(prop);
   mo.offset_s_.push_back(offset_s);
   mo.norad_.push_back(m.norad_id);
@@ -311,7 +364,7 @@ Sgp4Screening Sgp4CatalogBuilder::build(const std::vector<sgp4::MeanElements>& e
   auto motion = std::make_shared<Sgp4Motion>();
   motion->velocity_step_s_ = opt.velocity_step_s;
   motion->accel_step_s_ = opt.accel_step_s;
-  const std::vector<Envelope> env = envelopes(elements, out.start_j2000_s, opt);
+  const std::vector<Envelope> env = envelopes(elements, out.start_j2000_s, opt, &out.envelopes_sampled);
   for (std::size_t k = 0; k < elements.size(); ++k) {
     const sgp4::MeanElements& m = elements[k];
     SpaceObject obj;

@@ -5,7 +5,10 @@
 #include "evade/distributed/distributed_screen.hpp"
 
 #include <array>
+#include <climits>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 
 #ifdef EVADE_HAVE_MPI
 #include <mpi.h>
@@ -87,6 +90,15 @@ ScreenResult gather_on_rank0(const ScreenResult& mine, const MpiSession& session
 #endif
 
 }  // namespace
+
+void sum_over_ranks(std::vector<double>& v, const MpiSession& session) {
+  if (session.size() == 1) return;
+  if (v.size() > static_cast<std::size_t>(INT_MAX))
+    throw std::length_error("sum_over_ranks: " + std::to_string(v.size()) + " entries exceed one MPI count");
+#ifdef EVADE_HAVE_MPI
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+#endif
+}
 
 ScreenResult screen_distributed(const std::vector<conjunction::SpaceObject>& objects,
                                 double span_s, const conjunction::ScreenOptions& opt,

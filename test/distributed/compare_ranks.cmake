@@ -1,7 +1,8 @@
 # Runs an evade command as one process and under `mpirun -np 2`, and compares one JSON
 # member of the two outputs exactly (issue 13: identical events / identical percentiles).
 # -DEVADE=<evade> -DMPIEXEC=<mpirun> -DMPI_FLAGS="<flags>" -DARGS="<command args>"
-# -DKEYS="<top-level JSON keys to compare>"
+# -DKEYS="<top-level JSON keys to compare>" [-DSPLIT_KEY=<key>: a count rank 0 must find
+# smaller under mpirun -np 2 than one process does, e.g. the envelopes it sampled]
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 separate_arguments(flags UNIX_COMMAND "${MPI_FLAGS}")
 execute_process(COMMAND ${EVADE} ${args} RESULT_VARIABLE rc1 OUTPUT_VARIABLE out1 ERROR_VARIABLE err1)
@@ -33,3 +34,11 @@ foreach(key IN LISTS KEYS)
   string(LENGTH "${v1}" len)
   message(STATUS "${key}: identical (${len} characters)")
 endforeach()
+if(SPLIT_KEY)
+  string(JSON n1 GET "${out1}" ${SPLIT_KEY})
+  string(JSON n2 GET "${out2}" ${SPLIT_KEY})
+  if(NOT n1 GREATER 0 OR NOT n2 LESS n1)
+    message(FATAL_ERROR "${SPLIT_KEY}: ${n1} in one process, ${n2} on rank 0 of 2: not split")
+  endif()
+  message(STATUS "${SPLIT_KEY}: ${n1} in one process, ${n2} on rank 0 of 2")
+endif()

@@ -127,6 +127,10 @@ struct ScreenCatalogRequest {
   int ranks = 1;                  ///< MPI ranks of robust_screener (echoed in stats)
   int rank = 0;                   ///< this process's rank: only rank 0 builds the CDMs
   RobustScreener robust_screener; ///< empty: screen_robust in this process
+  /// With ranks > 1: replaces each entry of a vector by its sum over the ranks, in every
+  /// rank (MPI_Allreduce, MPI_SUM); the setup's perturbation envelopes are then split
+  /// between the ranks (Sgp4MotionOptions::sum_over_parts). Empty: each rank samples all.
+  std::function<void(std::vector<double>&)> sum_over_ranks;
   assessment::ScreenCdmOptions cdm;
   ScreenTextSink progress;        ///< progress text; empty: none
   ScreenTextSink diagnostic;      ///< one line per rejected element set; empty: none
@@ -169,6 +173,7 @@ struct ScreenCatalogResult {
   int threads = 0;
   int ranks = 1;
   double grid_step_s = 0.0;
+  long envelopes_sampled = 0;     ///< perturbation envelopes this process sampled
   double motion_setup_wall_s = 0.0;
   double screen_wall_s = 0.0;
   std::vector<CatalogEvent> events;

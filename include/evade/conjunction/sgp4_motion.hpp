@@ -31,6 +31,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -77,6 +78,15 @@ struct Sgp4MotionOptions {
   double envelope_floor_mps2 = 5e-6;
   double object_size_m = 0.0;     ///< SpaceObject::size_m given to every object
   int threads = 1;                ///< threads of the setup (the envelopes), >= 1
+  /// The envelopes split between processes (MPI ranks, issue 24): this process samples the
+  /// element sets k with k mod parts == part, into a vector of kEnvelopeRecord doubles per
+  /// element set, 0 where it samples nothing; sum_over_parts must then replace every entry
+  /// by its sum over the processes, in every process (MPI_Allreduce with MPI_SUM). Each
+  /// entry is non-zero in one process at most and x + 0 = x exactly, so every process ends
+  /// with the envelopes one process alone computes, bit for bit. parts = 1: no sharing.
+  int part = 0;
+  int parts = 1;
+  std::function<void(std::vector<double>&)> sum_over_parts;
   /// false: no perturbation envelope (states only, for reports and CDMs; perturbation() is
   /// +inf, so the robust screener proves nothing with it). SGP4 errors inside the span are
   /// then not looked for.
@@ -87,7 +97,13 @@ struct Sgp4MotionOptions {
  private:
   void validate_steps() const;
   void validate_envelope() const;
+  void validate_parts() const;
 };
+
+/// Doubles per element set in Sgp4MotionOptions::sum_over_parts' vector: the largest
+/// sampled |p| and its stencil error [m/s^2], the SGP4 error code that stopped the sampling
+/// (0: none) and the time of that sample from the start [s].
+constexpr std::size_t kEnvelopeRecord = 4;
 
 /// An element set left out of the screening, and why.
 struct RejectedElementSet {
@@ -148,6 +164,7 @@ struct Sgp4Screening {
   std::shared_ptr<const Sgp4Motion> motion;
   std::vector<RejectedElementSet> rejected;
   double start_j2000_s = 0.0;
+  long envelopes_sampled = 0;  ///< by this process (all of them unless split: parts > 1)
 };
 
 /// The times (from the start) at which the perturbation envelope of an orbit with this

@@ -11,6 +11,13 @@
 
 namespace evade::distributed {
 
+/// Replaces every entry of v by its sum over the ranks, in every rank (MPI_Allreduce with
+/// MPI_SUM; the vector must have the same size in every rank). One process: v unchanged.
+/// The SGP4 catalog screen splits its perturbation envelopes between the ranks with it
+/// (conjunction::ScreenCatalogRequest::sum_over_ranks). Throws std::length_error above
+/// INT_MAX entries.
+void sum_over_ranks(std::vector<double>& v, const MpiSession& session);
+
 /// On rank 0: the merged result of all ranks. On the others: their own part only.
 conjunction::ScreenResult screen_distributed(const std::vector<conjunction::SpaceObject>& objects,
                                              double span_s, const conjunction::ScreenOptions& opt,
