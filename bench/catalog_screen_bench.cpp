@@ -4,7 +4,10 @@
 //   BM_Sgp4CatalogSetup  : reading the file and sgp4_screening (SGP4 initialisation and the
 //                          perturbation envelope of every object) for a span of range(0) h;
 //   BM_Sgp4CatalogScreen : the all-pairs robust screening; args: span [h], threads;
-//   BM_Sgp4CatalogPrimary: one object (NORAD 90000) against the catalog; args: span [h].
+//   BM_Sgp4CatalogPrimary: one object (NORAD 90000) against the catalog; args: span [h];
+//   BM_Sgp4State         : one SGP4 state (position and SGP4's velocity) of every object of
+//                          the catalog at 100 instants over a day; arg 0: the near-Earth
+//                          objects (SGP4), 1: the deep-space ones (SDP4). Time per state.
 // Run from the repository root (the catalog path is relative to it; EVADE_CATALOG overrides):
 //   build/bench/catalog_screen_bench --benchmark_filter=Sgp4Catalog
 // Results and machine: docs/PERFORMANCE.md.
@@ -14,9 +17,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/sgp4_motion.hpp"
+#include "evade/sgp4/sgp4.hpp"
 #include "evade/sgp4/tle_reader.hpp"
 
 namespace {
@@ -51,6 +56,31 @@ void BM_Sgp4CatalogSetup(benchmark::State& state) {
   state.counters["objects"] = static_cast<double>(s.objects.size());
   state.counters["rejected"] = static_cast<double>(s.rejected.size());
 }
+void BM_Sgp4State(benchmark::State& state) {
+  sgp4::Catalog cat;
+  if (!read_catalog(state, cat)) return;
+  const bool deep = state.range(0) == 1;
+  std::vector<sgp4::Sgp4Propagator> props;
+  for (const auto& m : cat.objects) {
+    sgp4::Sgp4Propagator p(m);
+    if (p.init_error() == sgp4::Sgp4Error::kNone && (m.mean_motion_revpday < 6.4) == deep) props.push_back(p);
+  }
+  long states = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < 100; ++k) {
+      for (const auto& p : props) {
+        const sgp4::Sgp4State x = p.propagate_s(864.0 * k);
+        benchmark::DoNotOptimize(x.r_teme_m.data());
+      }
+    }
+    states += 100 * static_cast<long>(props.size());
+  }
+  state.counters["objects"] = static_cast<double>(props.size());
+  state.counters["ns_per_state"] =
+      benchmark::Counter(static_cast<double>(states) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Sgp4State)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 BENCHMARK(BM_Sgp4CatalogSetup)->Arg(24)->Arg(168)->MeasureProcessCPUTime()->UseRealTime()
     ->Unit(benchmark::kSecond)->Iterations(1);
 

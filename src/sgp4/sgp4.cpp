@@ -6,7 +6,11 @@
 // sgp4: secular gravity and drag, long-period periodics (J3: aycof, xlcof), Kepler's
 // equation in the Lyddane variables (Newton, at most 10 iterations, step limited to 0.95),
 // short-period J2 terms, and the unit vectors U, V giving r and v in TEME. The deep-space
-// branch (period >= 225 min) is in deep_space.cpp.
+// branch (period >= 225 min) is in deep_space.cpp. Where the reference computes the sine and
+// cosine of an angle a small step d from one whose sine and cosine it has (Newton's iterates;
+// the argument of latitude and the inclination plus their short-period corrections), they
+// are rotated by d here (rotate), and am^1.5 is am sqrt(am): the same numbers within a few
+// roundings (the SGP4-VER figures in docs/ASSESSMENT.md), a quarter of the time.
 #include "evade/sgp4/sgp4.hpp"
 
 #include <cmath>
@@ -48,23 +52,42 @@ double xlcof_of(double j3oj2, double sini, double cosi) noexcept {
   return -0.25 * j3oj2 * sini * (3.0 + 5.0 * cosi) / den;
 }
 
-// Kepler's equation in the Lyddane variables: returns E + omega with its sine and cosine
-// from the last Newton iteration, as the reference keeps them.
-struct KeplerSolution {
-  double sineo1, coseo1;
+// The sine and cosine of an angle.
+struct SinCos {
+  double s, c;
 };
 
-KeplerSolution solve_kepler(double u, double axnl, double aynl) noexcept {
-  double eo1 = u, tem5 = 9999.9, sineo1 = 0.0, coseo1 = 1.0;
+// Angle steps below which a sine and cosine are rotated rather than recomputed [rad].
+constexpr double kSmallAngle = 1e-2;
+
+// sin and cos of a + d from those of a, for |d| <= kSmallAngle: the angle-sum formulas with
+// sin d and cos d from their Taylor series through d^7 and d^8 (remainders below
+// |d|^9 / 9! = 3e-24 and |d|^10 / 10! = 3e-27 at |d| = 1e-2, far below the 1.1e-16 of one
+// rounding), so the result is within a few roundings of std::sin and std::cos of a + d.
+inline SinCos rotate(SinCos a, double d) noexcept {
+  const double d2 = d * d;
+  const double sd = d * (1.0 + d2 * (-1.0 / 6.0 + d2 * (1.0 / 120.0 + d2 * (-1.0 / 5040.0))));
+  const double cd = 1.0 + d2 * (-0.5 + d2 * (1.0 / 24.0 + d2 * (-1.0 / 720.0 + d2 * (1.0 / 40320.0))));
+  return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
+}
+
+// Kepler's equation in the Lyddane variables: returns the sine and cosine of E + omega from
+// the last Newton iteration, as the reference keeps them. Each iterate's sine and cosine
+// come from the previous iterate's rotated by the Newton step when that is small (rotate):
+// in LEO one sin and cos per call instead of one per iteration, the same values within a
+// few roundings.
+SinCos solve_kepler(double u, double axnl, double aynl) noexcept {
+  double eo1 = u, tem5 = 9999.9, step = 0.0;
+  SinCos sc{std::sin(u), std::cos(u)};
   for (int ktr = 1; std::fabs(tem5) >= 1.0e-12 && ktr <= 10; ++ktr) {
-    sineo1 = std::sin(eo1);
-    coseo1 = std::cos(eo1);
-    tem5 = 1.0 - coseo1 * axnl - sineo1 * aynl;
-    tem5 = (u - aynl * coseo1 + axnl * sineo1 - eo1) / tem5;
+    if (ktr > 1) sc = std::fabs(step) <= kSmallAngle ? rotate(sc, step) : SinCos{std::sin(eo1), std::cos(eo1)};
+    tem5 = 1.0 - sc.c * axnl - sc.s * aynl;
+    tem5 = (u - aynl * sc.c + axnl * sc.s - eo1) / tem5;
     if (std::fabs(tem5) >= 0.95) tem5 = tem5 > 0.0 ? 0.95 : -0.95;
+    step = tem5;
     eo1 = eo1 + tem5;
   }
-  return {sineo1, coseo1};
+  return sc;
 }
 
 }  // namespace
@@ -274,7 +297,7 @@ Sgp4State Sgp4Propagator::propagate_min(double t) const noexcept {
   if (deep_) deep_space_secular(ds_, ep_, t, m);
   if (m.nm <= 0.0) return failed(Sgp4Error::kMeanMotion);
   const double am = (deep_ ? std::pow(k_.xke_per_min / m.nm, kX2o3) : am_near_) * tempa * tempa;
-  const double nm = k_.xke_per_min / std::pow(am, 1.5);
+  const double nm = k_.xke_per_min / (am * std::sqrt(am));  // am^1.5
   double em = m.em - tempe;
   if (em >= 1.0 || em < -0.001) return failed(Sgp4Error::kMeanEccentricity);
   if (em < 1.0e-6) em = 1.0e-6;
@@ -309,9 +332,9 @@ Sgp4State Sgp4Propagator::position_velocity(const PerturbedElements& p, double a
   const double aynl = p.ep * std::sin(p.argpp) + temp * c.aycof;
   const double xl = p.mp + p.argpp + p.nodep + temp * c.xlcof * axnl;
   const double u = std::fmod(xl - p.nodep, kTwoPi);
-  const KeplerSolution ks = solve_kepler(u, axnl, aynl);
-  const double ecose = axnl * ks.coseo1 + aynl * ks.sineo1;
-  const double esine = axnl * ks.sineo1 - aynl * ks.coseo1;
+  const SinCos ks = solve_kepler(u, axnl, aynl);
+  const double ecose = axnl * ks.c + aynl * ks.s;
+  const double esine = axnl * ks.s - aynl * ks.c;
   const double el2 = axnl * axnl + aynl * aynl;
   const double pl = am * (1.0 - el2);
   if (pl < 0.0) return failed(Sgp4Error::kSemiLatusRectum);
@@ -321,24 +344,33 @@ Sgp4State Sgp4Propagator::position_velocity(const PerturbedElements& p, double a
   const double rvdotl = std::sqrt(pl) / rl;
   const double betal = std::sqrt(1.0 - el2);
   temp = esine / (1.0 + betal);
-  const double sinu = am / rl * (ks.sineo1 - aynl - axnl * temp);
-  const double cosu = am / rl * (ks.coseo1 - axnl + aynl * temp);
-  double su = std::atan2(sinu, cosu);
+  const double sinu = am / rl * (ks.s - aynl - axnl * temp);
+  const double cosu = am / rl * (ks.c - axnl + aynl * temp);
   const double sin2u = (cosu + cosu) * sinu;
   const double cos2u = 1.0 - 2.0 * sinu * sinu;
   temp = 1.0 / pl;
   const double temp1 = 0.5 * k_.j2 * temp;
   const double temp2 = temp1 * temp;
   const double mrt = rl * (1.0 - 1.5 * temp2 * betal * c.con41) + 0.5 * temp1 * c.x1mth2 * cos2u;
-  su = su - 0.25 * temp2 * c.x7thm1 * sin2u;
+  // su = atan2(sinu, cosu) + dsu and xinc = inclp + dinc, both corrections below 1e-3 rad
+  // (temp2 <= 0.5 J2 / pl^2 < 5.5e-4 for pl >= 1 Earth radius): their sines and cosines by
+  // rotation (rotate) of the unit (sinu, cosu) and of (sinip, cosip); the reference's
+  // atan2, sin and cos for larger ones.
+  const double dsu = -0.25 * temp2 * c.x7thm1 * sin2u;
+  const double dinc = 1.5 * temp2 * cosip * sinip * cos2u;
+  const double unorm = std::sqrt(sinu * sinu + cosu * cosu);
+  const double su_rad = std::fabs(dsu) <= kSmallAngle ? 0.0 : std::atan2(sinu, cosu) + dsu;
+  const SinCos su = std::fabs(dsu) <= kSmallAngle ? rotate({sinu / unorm, cosu / unorm}, dsu)
+                                                  : SinCos{std::sin(su_rad), std::cos(su_rad)};
+  const SinCos inc = std::fabs(dinc) <= kSmallAngle ? rotate({sinip, cosip}, dinc)
+                                                    : SinCos{std::sin(p.inclp + dinc), std::cos(p.inclp + dinc)};
   const double xnode = p.nodep + 1.5 * temp2 * cosip * sin2u;
-  const double xinc = p.inclp + 1.5 * temp2 * cosip * sinip * cos2u;
   const double mvt = rdotl - nm * temp1 * c.x1mth2 * sin2u / k_.xke_per_min;
   const double rvdot = rvdotl + nm * temp1 * (c.x1mth2 * cos2u + 1.5 * c.con41) / k_.xke_per_min;
   // Orientation vectors U (position direction) and V.
-  const double sinsu = std::sin(su), cossu = std::cos(su);
+  const double sinsu = su.s, cossu = su.c;
   const double snod = std::sin(xnode), cnod = std::cos(xnode);
-  const double sini = std::sin(xinc), cosi = std::cos(xinc);
+  const double sini = inc.s, cosi = inc.c;
   const double xmx = -snod * cosi, xmy = cnod * cosi;
   const Eigen::Vector3d uv(xmx * sinsu + cnod * cossu, xmy * sinsu + snod * cossu, sini * sinsu);
   const Eigen::Vector3d vv(xmx * cossu - cnod * sinsu, xmy * cossu - snod * sinsu, sini * cossu);
