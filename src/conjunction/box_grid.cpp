@@ -1,14 +1,17 @@
 // Broad phase of the robust screener (issue 6): the uniform grid of swept boxes of one grid
-// step (internal/box_grid.hpp). Cells are as large as the largest box, the same cells at
+// step (internal/box_grid.hpp). Cells are as large as the largest box, and at least 1/1200
+// of the boxes' extent so that a cell key fits the entries (a short last grid step's small
+// boxes spread from LEO to GEO once overflowed it, and pairs were lost), the same cells at
 // every coordinate (floor(x / cell), clamped); each box goes into the cells it touches, and
-// the (cell, object) entries are sorted by cell with a stable LSD radix sort (std::sort when
-// there are more than 2^31 cells), so that pairs can be formed per cell in object order.
+// the (cell, object) entries are sorted by cell with a stable LSD radix sort, so that pairs
+// can be formed per cell in object order.
 #include "evade/conjunction/internal/box_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace evade::conjunction::internal {
@@ -53,6 +56,9 @@ void BoxGrid::build(std::size_t n) {
     lo_min = lo_min.cwiseMin(lo[i]);
     hi_max = hi_max.cwiseMax(hi[i]);
   }
+  // At most kMaxCellsPerAxis + 1 cells per axis, so that every key is below 1202^3 < 2^31
+  // and fits the entries' layout (key << 32 | object); larger cells only pair more boxes.
+  cell = std::max(cell, (hi_max - lo_min).maxCoeff() / kMaxCellsPerAxis);
   cell_m = cell;
   for (int a = 0; a < 3; ++a) {
     origin[a] = cell_index(lo_min[a], cell);
@@ -76,15 +82,10 @@ void BoxGrid::build(std::size_t n) {
           entries.push_back(key(x, y, z) << 32 | static_cast<std::uint64_t>(i));
   }
   const std::uint64_t max_key = key(extent[0] - 1, extent[1] - 1, extent[2] - 1);
+  if ((max_key >> 31) != 0) throw std::logic_error("box grid: a cell key above 2^31 (the cell size bound failed)");
   int bits = 1;
-  while (bits < 32 && (max_key >> bits) != 0) ++bits;
-  if ((max_key >> 31) != 0) {
-    std::sort(entries.begin(), entries.end(), [](std::uint64_t p, std::uint64_t q) {
-      return p < q;
-    });  // more than 2^31 cells: keys overflow the radix layout, fall back (never in practice)
-  } else {
-    radix_sort_by_key(entries, scratch, bits);
-  }
+  while (bits < 31 && (max_key >> bits) != 0) ++bits;
+  radix_sort_by_key(entries, scratch, bits);
 }
 
 }  // namespace evade::conjunction::internal

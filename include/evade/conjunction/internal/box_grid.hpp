@@ -20,9 +20,13 @@ struct alignas(64) GridBox {
   std::int32_t cell[3];
 };
 
+/// Cells per axis of the grid at most (plus one): cells are at least the boxes' extent / this,
+/// so a cell key stays below 1202^3 < 2^31 and fits the entries' layout whatever the boxes.
+constexpr double kMaxCellsPerAxis = 1200.0;
+
 // The swept boxes of one grid step in a uniform grid of cells as large as the largest box
-// (each box touches at most 2 cells per axis): for each object its box and its lowest cell,
-// and the (cell, object) entries sorted by cell.
+// (each box touches at most 2 cells per axis) and at least the extent / kMaxCellsPerAxis:
+// for each object its box and its lowest cell, and the (cell, object) entries sorted by cell.
 struct BoxGrid {
   double cell_m = 0.0;
   std::int64_t origin[3] = {0, 0, 0};  // lowest cell on each axis
