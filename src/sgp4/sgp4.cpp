@@ -71,6 +71,23 @@ inline SinCos rotate(SinCos a, double d) noexcept {
   return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
 }
 
+// sin and cos of a + d, given those of a (sc_a): rotated for a small d, else recomputed.
+SinCos sincos_plus(SinCos sc_a, double a, double d) noexcept {
+  if (std::fabs(d) <= kSmallAngle) return rotate(sc_a, d);
+  return {std::sin(a + d), std::cos(a + d)};
+}
+
+// sin and cos of atan2(s, c) + d: (s, c) normalised and rotated for a small d, else the
+// reference's atan2, sin and cos.
+SinCos angle_plus(double s, double c, double d) noexcept {
+  if (std::fabs(d) <= kSmallAngle) {
+    const double norm = std::sqrt(s * s + c * c);
+    return rotate({s / norm, c / norm}, d);
+  }
+  const double a = std::atan2(s, c) + d;
+  return {std::sin(a), std::cos(a)};
+}
+
 // Kepler's equation in the Lyddane variables: returns the sine and cosine of E + omega from
 // the last Newton iteration, as the reference keeps them. Each iterate's sine and cosine
 // come from the previous iterate's rotated by the Newton step when that is small (rotate):
@@ -354,16 +371,9 @@ Sgp4State Sgp4Propagator::position_velocity(const PerturbedElements& p, double a
   const double mrt = rl * (1.0 - 1.5 * temp2 * betal * c.con41) + 0.5 * temp1 * c.x1mth2 * cos2u;
   // su = atan2(sinu, cosu) + dsu and xinc = inclp + dinc, both corrections below 1e-3 rad
   // (temp2 <= 0.5 J2 / pl^2 < 5.5e-4 for pl >= 1 Earth radius): their sines and cosines by
-  // rotation (rotate) of the unit (sinu, cosu) and of (sinip, cosip); the reference's
-  // atan2, sin and cos for larger ones.
-  const double dsu = -0.25 * temp2 * c.x7thm1 * sin2u;
-  const double dinc = 1.5 * temp2 * cosip * sinip * cos2u;
-  const double unorm = std::sqrt(sinu * sinu + cosu * cosu);
-  const double su_rad = std::fabs(dsu) <= kSmallAngle ? 0.0 : std::atan2(sinu, cosu) + dsu;
-  const SinCos su = std::fabs(dsu) <= kSmallAngle ? rotate({sinu / unorm, cosu / unorm}, dsu)
-                                                  : SinCos{std::sin(su_rad), std::cos(su_rad)};
-  const SinCos inc = std::fabs(dinc) <= kSmallAngle ? rotate({sinip, cosip}, dinc)
-                                                    : SinCos{std::sin(p.inclp + dinc), std::cos(p.inclp + dinc)};
+  // rotation of the unit (sinu, cosu) and of (sinip, cosip).
+  const SinCos su = angle_plus(sinu, cosu, -0.25 * temp2 * c.x7thm1 * sin2u);
+  const SinCos inc = sincos_plus({sinip, cosip}, p.inclp, 1.5 * temp2 * cosip * sinip * cos2u);
   const double xnode = p.nodep + 1.5 * temp2 * cosip * sin2u;
   const double mvt = rdotl - nm * temp1 * c.x1mth2 * sin2u / k_.xke_per_min;
   const double rvdot = rvdotl + nm * temp1 * (c.x1mth2 * cos2u + 1.5 * c.con41) / k_.xke_per_min;
