@@ -88,7 +88,7 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
       }
       q[k] = s.r_teme_m;
     }
-// Three-point second difference: truncation h^2 |r''''| / 12, |r''''| taken as
+    // Three-point second difference: truncation h^2 |r''''| / 12, |r''''| taken as
     // 4 n_max^4 |r|; each position within the jumps 4e-12 |r| (sgp4_motion.hpp), 4 of them.
     const Vec3 acc = (q[0] - 2.0 * q[1] + q[2]) / (h * h);
     const Vec3 pert = acc - accel_eci_mps2(q[1], GravityModel::kTwoBodyJ2, earth);
@@ -260,6 +260,9 @@ std::vector<Envelope> envelopes_from_records(const std::vector<double>& v, std::
   std::vector<Envelope> env(n);
   for (std::size_t k = 0; k < n; ++k) {
     const double* r = &v[k * kEnvelopeRecord];
+    if (!(r[2] == std::floor(r[2]) && r[2] >= 0.0 && r[2] <= static_cast<double>(sgp4::Sgp4Error::kDecayed)))
+      throw std::logic_error("sgp4 motion: sum_over_parts gave element set " + std::to_string(k) +
+                             " the SGP4 error code " + fmt(r[2]) + " (was it sampled by two parts?)");
     env[k].p_max_mps2 = r[0];
     env[k].error_mps2 = r[1];
     env[k].failure = static_cast<sgp4::Sgp4Error>(static_cast<int>(r[2]));

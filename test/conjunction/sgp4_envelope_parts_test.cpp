@@ -107,10 +107,18 @@ TEST(EnvelopeParts, RefusesAPartOutsideTheProcessesOrPartsWithoutASum) {
   EXPECT_THROW((void)sgp4_screening(cat, o), std::invalid_argument);
 }
 
-TEST(EnvelopeParts, ASumThatChangesTheVectorsSizeIsAnError) {
+TEST(EnvelopeParts, ASumThatChangesTheVectorsSizeOrGarblesAnErrorCodeIsAnError) {
   Sgp4MotionOptions o = options();
   o.parts = 2;
   o.sum_over_parts = [](std::vector<double>& v) { v.pop_back(); };
+  EXPECT_THROW((void)sgp4_screening(catalog_with_a_decaying_object(), o), std::logic_error);
+  // Both parts reporting the decaying element set's failure: its code summed to 12.
+  o.sum_over_parts = [](std::vector<double>& v) {
+    for (std::size_t k = 2; k < v.size(); k += kEnvelopeRecord) v[k] *= 2.0;
+  };
+  o.part = 1;  // the decaying element set is the last one, index 150: part 0's
+  EXPECT_NO_THROW((void)sgp4_screening(catalog_with_a_decaying_object(), o));  // nothing failed here
+  o.part = 0;
   EXPECT_THROW((void)sgp4_screening(catalog_with_a_decaying_object(), o), std::logic_error);
 }
 
