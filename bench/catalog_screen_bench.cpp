@@ -63,7 +63,7 @@ void BM_Sgp4State(benchmark::State& state) {
   std::vector<sgp4::Sgp4Propagator> props;
   for (const auto& m : cat.objects) {
     sgp4::Sgp4Propagator p(m);
-    if (p.init_error() == sgp4::Sgp4Error::kNone && (m.mean_motion_revpday < 6.4) == deep) props.push_back(p);
+    if (p.init_error() == sgp4::Sgp4Error::kNone && p.deep_space() == deep) props.push_back(p);
   }
   long states = 0;
   for (auto _ : state) {

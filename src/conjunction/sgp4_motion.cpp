@@ -29,6 +29,11 @@ std::string label(long norad, const std::string& name) {
   return "NORAD " + std::to_string(norad) + (name.empty() ? "" : " (" + name + ")");
 }
 
+// "SGP4 error N (text)".
+std::string sgp4_error_label(sgp4::Sgp4Error e) {
+  return "SGP4 error " + std::to_string(static_cast<int>(e)) + " (" + sgp4::sgp4_error_text(e) + ")";
+}
+
 // Position at t_s seconds from the element epoch, or the SGP4 error text.
 struct Position {
   bool ok = false;
@@ -42,8 +47,7 @@ Position position(const sgp4::Sgp4Propagator& p, double t_s) {
   out.ok = s.error == sgp4::Sgp4Error::kNone;
   out.r = s.r_teme_m;
   if (!out.ok) {
-    out.error = "SGP4 error " + std::to_string(static_cast<int>(s.error)) + " (" +
-                sgp4::sgp4_error_text(s.error) + ")";
+    out.error = sgp4_error_label(s.error);
   }
   return out;
 }
@@ -64,8 +68,7 @@ struct Envelope {
   double failed_at_s = 0.0;
   std::string reason() const {
     if (failure == sgp4::Sgp4Error::kNone) return {};
-    return "SGP4 error " + std::to_string(static_cast<int>(failure)) + " (" + sgp4::sgp4_error_text(failure) +
-           ") at t = " + fmt(failed_at_s) + " s from the start";
+    return sgp4_error_label(failure) + " at t = " + fmt(failed_at_s) + " s from the start";
   }
 };
 
@@ -310,8 +313,7 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
                                        const Envelope& env, SpaceObject& obj) {
   const sgp4::Sgp4Propagator prop(m, opt.mode);
   if (prop.init_error() != sgp4::Sgp4Error::kNone) {
-    return "SGP4 error " + std::to_string(static_cast<int>(prop.init_error())) + " (" +
-           sgp4::sgp4_error_text(prop.init_error()) + ") at the element epoch";
+    return sgp4_error_label(prop.init_error()) + " at the element epoch";
   }
   if (!(m.mean_motion_revpday > 0.0)) return "mean motion " + fmt(m.mean_motion_revpday) + " rev/day <= 0";
   const EarthModel earth = wgs72_earth();

@@ -71,10 +71,11 @@ inline SinCos rotate(SinCos a, double d) noexcept {
   return {a.s * cd + a.c * sd, a.c * cd - a.s * sd};
 }
 
-// sin and cos of a + d, given those of a (sc_a): rotated for a small d, else recomputed.
-SinCos sincos_plus(SinCos sc_a, double a, double d) noexcept {
+// sin and cos of the angle b = a + d, given those of a (sc_a): rotated for a small d, else
+// std::sin and std::cos of b.
+SinCos sincos_plus(SinCos sc_a, double b, double d) noexcept {
   if (std::fabs(d) <= kSmallAngle) return rotate(sc_a, d);
-  return {std::sin(a + d), std::cos(a + d)};
+  return {std::sin(b), std::cos(b)};
 }
 
 // sin and cos of atan2(s, c) + d: (s, c) normalised and rotated for a small d, else the
@@ -90,14 +91,14 @@ SinCos angle_plus(double s, double c, double d) noexcept {
 
 // Kepler's equation in the Lyddane variables: returns the sine and cosine of E + omega from
 // the last Newton iteration, as the reference keeps them. Each iterate's sine and cosine
-// come from the previous iterate's rotated by the Newton step when that is small (rotate):
+// come from the previous iterate's rotated by the Newton step when that is small (sincos_plus):
 // in LEO one sin and cos per call instead of one per iteration, the same values within a
 // few roundings.
 SinCos solve_kepler(double u, double axnl, double aynl) noexcept {
   double eo1 = u, tem5 = 9999.9, step = 0.0;
   SinCos sc{std::sin(u), std::cos(u)};
   for (int ktr = 1; std::fabs(tem5) >= 1.0e-12 && ktr <= 10; ++ktr) {
-    if (ktr > 1) sc = std::fabs(step) <= kSmallAngle ? rotate(sc, step) : SinCos{std::sin(eo1), std::cos(eo1)};
+    if (ktr > 1) sc = sincos_plus(sc, eo1, step);
     tem5 = 1.0 - sc.c * axnl - sc.s * aynl;
     tem5 = (u - aynl * sc.c + axnl * sc.s - eo1) / tem5;
     if (std::fabs(tem5) >= 0.95) tem5 = tem5 > 0.0 ? 0.95 : -0.95;
@@ -373,7 +374,8 @@ Sgp4State Sgp4Propagator::position_velocity(const PerturbedElements& p, double a
   // (temp2 <= 0.5 J2 / pl^2 < 5.5e-4 for pl >= 1 Earth radius): their sines and cosines by
   // rotation of the unit (sinu, cosu) and of (sinip, cosip).
   const SinCos su = angle_plus(sinu, cosu, -0.25 * temp2 * c.x7thm1 * sin2u);
-  const SinCos inc = sincos_plus({sinip, cosip}, p.inclp, 1.5 * temp2 * cosip * sinip * cos2u);
+  const double dinc = 1.5 * temp2 * cosip * sinip * cos2u;
+  const SinCos inc = sincos_plus({sinip, cosip}, p.inclp + dinc, dinc);
   const double xnode = p.nodep + 1.5 * temp2 * cosip * sin2u;
   const double mvt = rdotl - nm * temp1 * c.x1mth2 * sin2u / k_.xke_per_min;
   const double rvdot = rvdotl + nm * temp1 * (c.x1mth2 * cos2u + 1.5 * c.con41) / k_.xke_per_min;

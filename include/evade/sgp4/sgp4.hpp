@@ -70,6 +70,8 @@ class Sgp4Propagator {
 
   /// The error code at epoch (kNone when the element set initialised cleanly).
   Sgp4Error init_error() const noexcept { return init_error_; }
+  /// True for the deep-space branch (SDP4: period >= 225 min at initialisation).
+  bool deep_space() const noexcept { return deep_; }
   /// State at tsince minutes from the element epoch. Thread-safe (const, no stored state).
   Sgp4State propagate_min(double tsince_min) const noexcept;
   /// State at t_s seconds from the element epoch.
