@@ -9,7 +9,9 @@
 
 #include <unistd.h>
 
+#include "evade/config/read_params.hpp"
 #include "number_list.hpp"
+#include "param_flag_option.hpp"
 
 namespace evade::cli {
 
@@ -22,6 +24,10 @@ void add_cdm_out_options(CLI::App& app, CdmOutOptions& o) {
                  "with --cdm-out: assumed RTN position sigmas R,T,N [m] of every object; the CDMs then carry a Pc");
   app.add_option("--hbr-m", o.hbr_m, "with --cdm-out: hard-body radius for the Pc [m] (default: the objects' radii)")
       ->check(CLI::PositiveNumber);
+  const ParamSpec* spec =
+      config::find_param_spec(assessment::assess_params(), "assessment.", "assessment.mc_max_samples");
+  if (spec == nullptr) throw std::logic_error("no declaration of assessment.mc_max_samples");
+  (void)add_param_flag(app, "assessment.mc_max_samples", *spec, &o.assess_sets);
 }
 
 assessment::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
@@ -31,6 +37,11 @@ assessment::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
   c.cov_rtn_sigma_text = o.cov_sigma;
   if (!o.cov_sigma.empty()) c.cov_rtn_sigma_m = parse_number_list(o.cov_sigma, ',');
   c.hbr_m = o.hbr_m;
+  // The assessment flags, read through the assessment table (checked when parsed).
+  config::Scenario sets = config::Scenario::empty("--mc-max-samples");
+  for (const std::string& s : o.assess_sets) sets.apply_override(s);
+  config::read_params(sets, "assessment.", assessment::assess_params(), &c.assess);
+  c.assess_given = !o.assess_sets.empty();
   c.sink = [](const assessment::ScreenCdmFile& m) { write_cdm_file(m); };  // as each is made
   return c;
 }

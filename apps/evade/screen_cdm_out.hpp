@@ -1,11 +1,12 @@
 // `evade screen ... --cdm-out DIR [--cdm-format kvn|xml] [--cov-rtn-sigma-m R,T,N]
-// [--hbr-m H]`: the flags, the directory and the files. The messages (one CCSDS CDM per
-// event) are built by the library (assessment/screen_cdms.hpp, conjunction/screen_command.hpp)
-// for both input paths; DIR is created before the screening starts, so an unwritable
-// directory fails at once.
+// [--hbr-m H] [--mc-max-samples N]`: the flags, the directory and the files. The messages
+// (one CCSDS CDM per event) are built by the library (assessment/screen_cdms.hpp,
+// conjunction/screen_command.hpp) for both input paths; DIR is created before the screening
+// starts, so an unwritable directory fails at once.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,7 @@ struct CdmOutOptions {
   std::string format = "kvn";   ///< --cdm-format kvn|xml
   std::string cov_sigma;        ///< --cov-rtn-sigma-m R,T,N (empty: covariance not known)
   double hbr_m = 0.0;           ///< --hbr-m (0: the objects' radii where known)
+  std::vector<std::string> assess_sets;  ///< --mc-max-samples as "assessment.KEY=VALUE"
 };
 
 void add_cdm_out_options(CLI::App& app, CdmOutOptions& o);

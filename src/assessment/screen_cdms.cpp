@@ -26,6 +26,7 @@ EventCdmOptions base_options(const ScreenCdmOptions& o, const ScreenCdmRun& run)
   EventCdmOptions opt;
   opt.creation_utc_j2000_s = o.creation_utc_j2000_s ? *o.creation_utc_j2000_s : now_utc_j2000_s();
   opt.hbr_m = o.hbr_m;
+  opt.assess = o.assess;
   opt.hbr_source = o.hbr_m > 0.0 ? "--hbr-m" : "sum of the two objects' radii (AREA_PC = pi r^2)";
   opt.header_comment = "evade screen: " + run.source;
   return opt;
@@ -84,13 +85,17 @@ std::optional<Mat6> assumed_rtn_covariance(const ScreenCdmOptions& o) {
 
 void check_screen_cdm_options(const ScreenCdmOptions& o, bool objects_have_radii) {
   if (o.dir.empty()) {
-    if (!o.cov_rtn_sigma_text.empty() || o.hbr_m > 0.0 || o.format != "kvn")
-      throw std::invalid_argument("--cdm-format, --cov-rtn-sigma-m and --hbr-m: only with --cdm-out DIR");
+    if (!o.cov_rtn_sigma_text.empty() || o.hbr_m > 0.0 || o.format != "kvn" || o.assess_given)
+      throw std::invalid_argument(
+          "--cdm-format, --cov-rtn-sigma-m, --hbr-m and --mc-max-samples: only with --cdm-out DIR");
     return;
   }
   (void)assumed_rtn_covariance(o);
   if (o.hbr_m > 0.0 && o.cov_rtn_sigma_text.empty())
     throw std::invalid_argument("--hbr-m: only with --cov-rtn-sigma-m (without a covariance there is no Pc)");
+  if (o.assess_given && o.cov_rtn_sigma_text.empty())
+    throw std::invalid_argument(
+        "--mc-max-samples: only with --cov-rtn-sigma-m (without a covariance there is no Pc)");
   if (!o.cov_rtn_sigma_text.empty() && !objects_have_radii && !(o.hbr_m > 0.0))
     throw std::invalid_argument("--cov-rtn-sigma-m: catalog objects carry no size: give --hbr-m");
 }

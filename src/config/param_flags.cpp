@@ -29,6 +29,7 @@ constexpr ParamFlagRow kRows[] = {
     {"robust.threshold_m", "--threshold-m", ""},
     {"robust.step_s", "--step-s", ""},
     {"assessment.window_s", "--window-s", ""},
+    {"assessment.mc_max_samples", "--mc-max-samples", ""},
 };
 
 constexpr RetiredFlag kSimRetired[] = {

@@ -33,6 +33,10 @@ struct ScreenCdmOptions {
   std::string cov_rtn_sigma_text;        ///< "R,T,N" as given (empty: covariance not known)
   std::vector<double> cov_rtn_sigma_m;   ///< its numbers (empty when it is not a number list)
   double hbr_m = 0.0;                    ///< hard-body radius [m]; 0: the objects' radii
+  /// The Pc method choice and its escalated Monte Carlo (assessment_params: the
+  /// `assessment.*` keys; the CLI sets mc_max_samples with --mc-max-samples).
+  AssessConfig assess;
+  bool assess_given = false;             ///< a flag set `assess` (only with a covariance)
   std::optional<double> creation_utc_j2000_s;  ///< CREATION_DATE; empty: the clock now
   /// When set, each message goes here as soon as it is made (the CLI writes its file) and
   /// its text is not kept in the result (ScreenCdmFile::text empty).
