@@ -68,6 +68,10 @@ function(evade_add_test name)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test)  # test/support/
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
   evade_set_warnings(${name})
+  if(TARGET evade_test_pch)  # test/CMakeLists.txt, EVADE_TEST_PCH
+    target_link_libraries(${name} PRIVATE Eigen3::Eigen)  # the header's own include path
+    target_precompile_headers(${name} REUSE_FROM evade_test_pch)
+  endif()
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 600)
   endif()
