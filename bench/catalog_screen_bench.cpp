@@ -8,6 +8,8 @@
 //   BM_Sgp4State         : one SGP4 state (position and SGP4's velocity) of every object of
 //                          the catalog at 100 instants over a day; arg 0: the near-Earth
 //                          objects (SGP4), 1: the deep-space ones (SDP4). Time per state.
+//   BM_Sgp4StateX4       : the near-Earth states of BM_Sgp4State(0), four at a time
+//                          (propagate_near_x4, AVX2 where the processor has it).
 // Run from the repository root (the catalog path is relative to it; EVADE_CATALOG overrides):
 //   build/bench/catalog_screen_bench --benchmark_filter=Sgp4Catalog
 // Results and machine: docs/PERFORMANCE.md.
@@ -80,6 +82,38 @@ void BM_Sgp4State(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(states) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_Sgp4State)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The near-Earth states of BM_Sgp4State(0), four objects at a time (propagate_near_x4).
+void BM_Sgp4StateX4(benchmark::State& state) {
+  sgp4::Catalog cat;
+  if (!read_catalog(state, cat)) return;
+  std::vector<sgp4::Sgp4Propagator> props;
+  for (const auto& m : cat.objects) {
+    sgp4::Sgp4Propagator p(m);
+    if (p.init_error() == sgp4::Sgp4Error::kNone && !p.deep_space()) props.push_back(p);
+  }
+  const std::size_t n4 = props.size() / 4 * 4;
+  long states = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < 100; ++k) {
+      const double t = 864.0 * k / 60.0;
+      const double tk[4] = {t, t, t, t};
+      for (std::size_t g = 0; g < n4; g += 4) {
+        const sgp4::Sgp4Propagator* p[4] = {&props[g], &props[g + 1], &props[g + 2], &props[g + 3]};
+        double r[4][3], v[4][3];
+        bool ok[4];
+        sgp4::propagate_near_x4(p, tk, r, v, ok);
+        benchmark::DoNotOptimize(r);
+      }
+    }
+    states += 100 * static_cast<long>(n4);
+  }
+  state.counters["objects"] = static_cast<double>(n4);
+  state.counters["ns_per_state"] =
+      benchmark::Counter(static_cast<double>(states) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(sgp4::sgp4_x4_vectorized() ? "AVX2" : "scalar lanes");
+}
+BENCHMARK(BM_Sgp4StateX4)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(BM_Sgp4CatalogSetup)->Arg(24)->Arg(168)->MeasureProcessCPUTime()->UseRealTime()
     ->Unit(benchmark::kSecond)->Iterations(1);

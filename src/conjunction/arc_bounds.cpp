@@ -44,12 +44,14 @@ double gravity_hessian_bound(double r_m, GravityModel model, const EarthModel& e
 }
 
 ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityModel model,
-                     const EarthModel& earth, double perturbation_mps2, double velocity_error_mps) {
+                     const EarthModel& earth, double perturbation_mps2, double velocity_error_mps,
+                     double position_error_m) {
   // |r''| <= G(r) + perturbation at radius >= r.
   auto g_bound = [&](double r_m) { return gravity_bound_mps2(r_m, model, earth) + perturbation_mps2; };
   // Lemma, first part: the tangent segment keeps the arc above rho_star. With a velocity
   // known to within dv, r(t_a + s) departs from r_a + v_a s by at most dv s + G s^2 / 2.
-  const double d_tan = segment_distance_m(a.r_eci_m, a.r_eci_m + h_s * a.v_eci_mps);
+  // Positions within position_error_m of the exact ones move the segment by at most that.
+  const double d_tan = segment_distance_m(a.r_eci_m, a.r_eci_m + h_s * a.v_eci_mps) - position_error_m;
   const double rho0 = 0.5 * d_tan;
   const double rho_star = d_tan - velocity_error_mps * h_s - g_bound(rho0) * h_s * h_s / 2.0;
   if (!(rho_star > rho0)) {
@@ -60,8 +62,8 @@ ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityMo
   // Second part: |r''| <= G(rho_star), so the arc stays within G h^2/8 of its chord.
   const double chord_dev = g_bound(rho_star) * h_s * h_s / 8.0;
   ArcBounds out;
-  out.r_lo_m = std::max(rho_star, segment_distance_m(a.r_eci_m, b.r_eci_m) - chord_dev);
-  out.r_hi_m = std::max(a.r_eci_m.norm(), b.r_eci_m.norm()) + chord_dev;
+  out.r_lo_m = std::max(rho_star, segment_distance_m(a.r_eci_m, b.r_eci_m) - chord_dev - position_error_m);
+  out.r_hi_m = std::max(a.r_eci_m.norm(), b.r_eci_m.norm()) + chord_dev + position_error_m;
   out.g_max_mps2 = g_bound(out.r_lo_m);
   out.perturbation_mps2 = perturbation_mps2;
   // |v(t)| <= min(|v_a| + g (t - t_a), |v_b| + g (t_b - t)) <= (|v_a| + |v_b| + g h) / 2,

@@ -102,7 +102,7 @@ void Ephemeris::grid_states_at(double t_s, std::size_t begin, std::size_t end, S
     states_at(t_s, begin, end, out);
     return;
   }
-  for (std::size_t i = begin; i < end; ++i) out[i] = motion_->grid_state_at(i, t_s);
+  motion_->grid_states_at(t_s, begin, end, out);
 }
 
 StepArcs Ephemeris::make_arcs() const {

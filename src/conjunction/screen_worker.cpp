@@ -51,7 +51,7 @@ void Worker::update_step_bounds(const StateEci* sa, const StateEci* sb, double d
   for (std::size_t i = 0; i < step_bounds.size(); ++i) {
     const PerturbationBound pb = opt->motion ? opt->motion->perturbation(i) : PerturbationBound{};
     step_bounds[i] = arc_bounds(sa[i], sb[i], dt, opt->gravity, opt->earth, pb.accel_mps2,
-                                eph->grid_velocity_error_mps(i));
+                                eph->grid_velocity_error_mps(i), eph->grid_position_error_m(i));
     step_bounds[i].perturbation_rate_mps3 = pb.rate_mps3;
   }
 }
@@ -61,7 +61,10 @@ void Worker::build_boxes(const StateEci* sa, const StateEci* sb, double dt) {
   grid.lo.resize(n);
   grid.hi.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const double pad = step_bounds[i].g_max_mps2 * dt * dt / 8.0 + 0.5 * d_max;
+    // The arc within G h^2 / 8 of the exact chord, which is within the grid positions' error
+    // of this one.
+    const double pad =
+        step_bounds[i].g_max_mps2 * dt * dt / 8.0 + eph->grid_position_error_m(i) + 0.5 * d_max;
     grid.lo[i] = sa[i].r_eci_m.cwiseMin(sb[i].r_eci_m).array() - pad;
     grid.hi[i] = sa[i].r_eci_m.cwiseMax(sb[i].r_eci_m).array() + pad;
   }
@@ -107,7 +110,9 @@ void Worker::screen_cell(std::uint64_t key, const StateEci* sa, const StateEci* 
       if (!apogee_perigee_may_meet(step_bounds[i], step_bounds[j], d_ij)) continue;
       ++stats.candidates;
       const StepPositions pos{sa[i].r_eci_m, sa[j].r_eci_m, sb[i].r_eci_m, sb[j].r_eci_m, t_b - t_a};
-      if (!may_come_within(i, j, pos, d_ij, ctx, stats)) continue;
+      // The grid positions' errors move the separation at each end by at most their sum.
+      const double d_grid = d_ij + eph->grid_position_error_m(i) + eph->grid_position_error_m(j);
+      if (!may_come_within(i, j, pos, d_grid, ctx, stats)) continue;
       const StateEci &ai = exact(i, 0, sa, t_a), &aj = exact(j, 0, sa, t_a);
       const StateEci &bi = exact(i, 1, sb, t_b), &bj = exact(j, 1, sb, t_b);
       narrow_phase(i, j, Endpoint{t_a, ai, aj}, Endpoint{t_b, bi, bj}, ai, aj, t_a, d_ij, ctx,

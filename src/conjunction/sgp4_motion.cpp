@@ -72,6 +72,24 @@ struct Envelope {
   }
 };
 
+// The positions at offset_s + t_s[k] (k < n), four at a time (sgp4::propagate_near_x4: within
+// kSgp4X4PositionErrorRel |r| of propagate_s's); ok[k] 0 where that flagged the instant
+// (propagate_s then decides).
+void envelope_positions(const sgp4::Sgp4Propagator& p, double offset_s, const double* t_s,
+                        std::size_t n, Vec3* r, char* ok) {
+  const sgp4::Sgp4Propagator* lanes[4] = {&p, &p, &p, &p};
+  for (std::size_t b = 0; b < n; b += 4) {
+    double tsince_min[4], rk[4][3], vk[4][3];
+    bool okk[4];
+    for (std::size_t k = 0; k < 4; ++k) tsince_min[k] = (offset_s + t_s[std::min(b + k, n - 1)]) / 60.0;
+    sgp4::propagate_near_x4(lanes, tsince_min, rk, vk, okk);
+    for (std::size_t k = 0; k < 4 && b + k < n; ++k) {
+      r[b + k] = Vec3(rk[k][0], rk[k][1], rk[k][2]);
+      ok[b + k] = okk[k] ? 1 : 0;
+    }
+  }
+}
+
 Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
                          const sgp4::MeanElements& m, const Sgp4MotionOptions& opt,
                          const EarthModel& earth) {
@@ -79,25 +97,42 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
       envelope_sample_times(86400.0 / m.mean_motion_revpday, m.eccentricity, opt);
   const double h = opt.envelope_step_s;
   const double n_max = n_max_radps(m), n2 = n_max * n_max;
+  // Every instant of the stencils (t - h, t, t + h per sample); a near-Earth object's four at
+  // a time where the processor allows.
+  const bool x4 = sgp4::sgp4_x4_vectorized() && !p.deep_space();
+  std::vector<double> ts(3 * times.size());
+  for (std::size_t s = 0; s < times.size(); ++s)
+    for (std::size_t k = 0; k < 3; ++k) ts[3 * s + k] = times[s] + (static_cast<double>(k) - 1.0) * h;
+  std::vector<Vec3> pos(ts.size());
+  std::vector<char> ok(ts.size(), 0);
+  if (x4) envelope_positions(p, offset_s, ts.data(), ts.size(), pos.data(), ok.data());
+  // Each position within the jumps 4e-12 |r| (sgp4_motion.hpp) and, four at a time, within a
+  // further kSgp4X4PositionErrorRel |r| of propagate_s's.
+  const double jump_rel = 4e-12 + (x4 ? sgp4::kSgp4X4PositionErrorRel : 0.0);
   Envelope env;
-  for (const double t : times) {
+  for (std::size_t s = 0; s < times.size(); ++s) {
     Vec3 q[3];
-    for (int k = 0; k < 3; ++k) {
-      const sgp4::Sgp4State s = p.propagate_s(offset_s + t + (k - 1) * h);
-      if (s.error != sgp4::Sgp4Error::kNone) {
-        env.failure = s.error;
-        env.failed_at_s = t + (k - 1) * h;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::size_t i = 3 * s + k;
+      if (ok[i] != 0) {
+        q[k] = pos[i];
+        continue;
+      }
+      const sgp4::Sgp4State st = p.propagate_s(offset_s + ts[i]);
+      if (st.error != sgp4::Sgp4Error::kNone) {  // the first error met, in time order
+        env.failure = st.error;
+        env.failed_at_s = ts[i];
         return env;
       }
-      q[k] = s.r_teme_m;
+      q[k] = st.r_teme_m;
     }
     // Three-point second difference: truncation h^2 |r''''| / 12, |r''''| taken as
-    // 4 n_max^4 |r|; each position within the jumps 4e-12 |r| (sgp4_motion.hpp), 4 of them.
+    // 4 n_max^4 |r|; each of its positions within the jumps, 4 of them.
     const Vec3 acc = (q[0] - 2.0 * q[1] + q[2]) / (h * h);
     const Vec3 pert = acc - accel_eci_mps2(q[1], GravityModel::kTwoBodyJ2, earth);
     const double r = q[1].norm();
     env.p_max_mps2 = std::max(env.p_max_mps2, pert.norm());
-    env.error_mps2 = std::max(env.error_mps2, 4.0 * n2 * n2 * r * h * h / 12.0 + 16e-12 * r / (h * h));
+    env.error_mps2 = std::max(env.error_mps2, 4.0 * n2 * n2 * r * h * h / 12.0 + 4.0 * jump_rel * r / (h * h));
   }
   return env;
 }
@@ -212,12 +247,48 @@ StateEci Sgp4Motion::grid_state_at(std::size_t i, double t_s) const {
   return StateEci{s.r_teme_m, s.v_teme_mps};
 }
 
-double Sgp4Motion::grid_velocity_error_mps(std::size_t) const {
+void Sgp4Motion::grid_states_at(double t_s, std::size_t begin, std::size_t end,
+                                StateEci* out) const {
+  std::size_t lane[4];
+  int n = 0;
+  const auto run = [&]() {
+    const sgp4::Sgp4Propagator* p[4];
+    double tsince_min[4], r[4][3], v[4][3];
+    bool ok[4];
+    for (int k = 0; k < 4; ++k) {  // a short group repeats its last object
+      const std::size_t i = lane[std::min(k, n - 1)];
+      p[k] = &props_[i];
+      tsince_min[k] = (offset_s_[i] + t_s) / 60.0;  // as propagate_s
+    }
+    sgp4::propagate_near_x4(p, tsince_min, r, v, ok);
+    for (int k = 0; k < n; ++k) {
+      const std::size_t i = lane[k];
+      out[i] = ok[k] ? StateEci{Vec3(r[k][0], r[k][1], r[k][2]), Vec3(v[k][0], v[k][1], v[k][2])}
+                     : grid_state_at(i, t_s);  // an error: named by state_at
+    }
+    n = 0;
+  };
+  for (std::size_t i = begin; i < end; ++i) {
+    if (!four_lane(i)) {
+      out[i] = grid_state_at(i, t_s);
+      continue;
+    }
+    lane[n++] = i;
+    if (n == 4) run();
+  }
+  if (n > 0) run();
+}
+
+double Sgp4Motion::grid_velocity_error_mps(std::size_t i) const {
   static const double kErrorMps = [] {  // the same for every object: computed once
     const EarthModel e = wgs72_earth();
     return velocity_allowance_mps(std::sqrt(2.0 * e.mu_m3ps2 / e.re_m));
   }();
-  return kErrorMps;
+  return kErrorMps + (four_lane(i) ? 1e-6 : 0.0);
+}
+
+double Sgp4Motion::grid_position_error_m(std::size_t i) const {
+  return four_lane(i) ? sgp4::kSgp4X4PositionError_m : 0.0;
 }
 
 bool Sgp4Motion::acceleration_at(std::size_t i, double t_s, Vec3& a_mps2, double& error_mps2) const {
@@ -321,6 +392,7 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   if (env.failure != sgp4::Sgp4Error::kNone) return env.reason();
   mo.props_.push_back(prop);
   mo.offset_s_.push_back(offset_s);
+  mo.four_lane_.push_back(sgp4::sgp4_x4_vectorized() && !prop.deep_space() ? 1 : 0);
   mo.norad_.push_back(m.norad_id);
   mo.names_.push_back(m.name);
   const std::size_t i = mo.props_.size() - 1;
@@ -339,6 +411,7 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   if (!bad.empty()) {
     mo.props_.pop_back();
     mo.offset_s_.pop_back();
+    mo.four_lane_.pop_back();
     mo.norad_.pop_back();
     mo.names_.pop_back();
     return bad;

@@ -46,8 +46,11 @@ struct ArcBounds {
 /// velocity_error_mps: a bound on |v - r'| of the velocities of a and b (grid states with
 /// SGP4's own velocity, MotionSource::grid_state_at): the tangent segment then departs from
 /// the arc by a further velocity_error_mps x h_s, and v_max grows by it.
+/// position_error_m: a bound on the distance of a's and b's positions from the exact ones
+/// (MotionSource::grid_position_error_m): the tangent segment and the chord then lie within
+/// it of the exact ones, so rho* and r_lo shrink by it and r_hi grows by it.
 ArcBounds arc_bounds(const StateEci& a, const StateEci& b, double h_s, GravityModel model,
                      const EarthModel& earth, double perturbation_mps2 = 0.0,
-                     double velocity_error_mps = 0.0);
+                     double velocity_error_mps = 0.0, double position_error_m = 0.0);
 
 }  // namespace evade::conjunction

@@ -64,8 +64,9 @@ class Ephemeris {
   /// ranges may run concurrently.
   void states_at(double t_s, std::size_t begin, std::size_t end, StateEci* out);
   /// The broad phase's grid states: states_at, except with a motion source that has cheaper
-  /// grid states (MotionSource::grid_state_at), whose velocity is then within
-  /// grid_velocity_error_mps(i) of r'. Same contract as states_at.
+  /// grid states (MotionSource::grid_states_at), whose velocity is then within
+  /// grid_velocity_error_mps(i) of r' and position within grid_position_error_m(i) of the
+  /// exact one. Same contract as states_at.
   void grid_states_at(double t_s, std::size_t begin, std::size_t end, StateEci* out);
   /// True when grid_states_at differs from states_at (the narrow phase then starts from
   /// exact_state).
@@ -73,6 +74,10 @@ class Ephemeris {
   /// Bound on |v - r'| of the velocity grid_states_at gives object i (0: exact).
   double grid_velocity_error_mps(std::size_t i) const {
     return has_grid_states() ? motion_->grid_velocity_error_mps(i) : 0.0;
+  }
+  /// Bound on |r - exact r| of the position grid_states_at gives object i (0: exact).
+  double grid_position_error_m(std::size_t i) const {
+    return has_grid_states() ? motion_->grid_position_error_m(i) : 0.0;
   }
   /// State of object i at t_s from the motion source (only with has_grid_states()).
   StateEci exact_state(std::size_t i, double t_s) const { return motion_->state_at(i, t_s); }

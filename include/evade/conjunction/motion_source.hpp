@@ -54,8 +54,21 @@ class MotionSource {
   /// r' by up to grid_velocity_error_mps(i); the position is state_at's. Default: state_at.
   /// Thread-safe; throws as state_at.
   virtual StateEci grid_state_at(std::size_t i, double t_s) const { return state_at(i, t_s); }
+  /// The grid states of objects [begin, end) at t_s into out[begin], ..., out[end - 1]
+  /// (default: grid_state_at one by one). A source may compute several objects at once; its
+  /// positions may then differ from state_at's by up to grid_position_error_m(i). Calls on
+  /// disjoint ranges may run concurrently; throws as state_at.
+  virtual void grid_states_at(double t_s, std::size_t begin, std::size_t end, StateEci* out) const {
+    for (std::size_t i = begin; i < end; ++i) out[i] = grid_state_at(i, t_s);
+  }
   /// A bound on |v - r'| for grid_state_at (default: velocity_error_mps(i)).
   virtual double grid_velocity_error_mps(std::size_t i) const { return velocity_error_mps(i); }
+  /// A bound on |r - state_at(i, t).r| for the positions grid_states_at gives (default 0:
+  /// the same positions). The broad phase widens its boxes and tests by it.
+  virtual double grid_position_error_m(std::size_t i) const {
+    (void)i;
+    return 0.0;
+  }
   /// True when grid_state_at is not state_at: the screener then takes the states the narrow
   /// phase starts from from state_at, and the grid's only for the boxes and arc bounds.
   virtual bool has_grid_states() const { return false; }

@@ -59,6 +59,32 @@ struct RadiusBounds {
 /// Converts catalog mean elements (degrees, rev/day) to the theory's units.
 Sgp4Elements sgp4_elements(const MeanElements& m) noexcept;
 
+class Sgp4Propagator;
+
+/// True when propagate_near_x4 computes four lanes at once on this processor (x86-64 with
+/// AVX2 and FMA, with glibc's vector sine and cosine); false elsewhere, where it computes one lane
+/// after the other with propagate_min.
+bool sgp4_x4_vectorized() noexcept;
+
+/// TEME positions [m] and velocities [m/s] of four near-Earth propagators p[k] (deep_space()
+/// false, init_error() kNone) at tsince_min[k], lane by lane the formulas of propagate_min
+/// evaluated four at a time (sgp4_x4.cpp). They differ from propagate_min's only by the
+/// roundings of the vector sine and cosine (at most 4 ulp where the scalar ones are within
+/// 1): docs/VALIDATION.md bounds that by kSgp4X4PositionError_m, which sgp4_x4_test.cpp
+/// checks on the shipped catalog. ok[k] is false where propagate_min
+/// would report an error or a decay (or a correction leaves the small-angle range); that
+/// lane's outputs are then unspecified and the caller uses propagate_min. Thread-safe.
+void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                       double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept;
+
+/// Bound on |r_x4 - r| / |r| between propagate_near_x4 and propagate_min positions
+/// (docs/VALIDATION.md: about 100 times the largest measured, 1.03e-15 on the shipped
+/// catalog; a fortieth of the 4e-12 |r| jumps SGP4's own positions are allowed).
+constexpr double kSgp4X4PositionErrorRel = 1e-13;
+/// The same as a distance [m]: 1 mm, far above kSgp4X4PositionErrorRel |r| for every
+/// near-Earth orbit (period < 225 min, so |r| < 2 a < 2.4e7 m: 2.4e-6 m).
+constexpr double kSgp4X4PositionError_m = 1e-3;
+
 class Sgp4Propagator {
  public:
   /// sgp4init. Never throws; a bad element set shows up in init_error() (the state at
@@ -82,6 +108,9 @@ class Sgp4Propagator {
   RadiusBounds radius_bounds(double t0_min, double t1_min) const noexcept;
 
  private:
+  friend void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                                double r_teme_m[4][3], double v_teme_mps[4][3],
+                                bool ok[4]) noexcept;
   struct Short {
     double con41, x1mth2, x7thm1, aycof, xlcof;
   };

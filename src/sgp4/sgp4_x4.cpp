@@ -1,0 +1,331 @@
+// Near-Earth SGP4 for four element sets at once (sgp4.hpp, propagate_near_x4): the formulas
+// of Sgp4Propagator::propagate_min (Vallado, Crawford, Hujsak & Kelso 2006, "Revisiting
+// Spacetrack Report #3", the near-Earth branch of sgp4: secular gravity and drag, long-period
+// periodics, Kepler's equation in the Lyddane variables, short-period J2 terms, the unit
+// vectors U and V), written once more over AVX2 lanes of four doubles, in the same order of
+// operations, so that each lane rounds as the scalar code does except in three places:
+//  - sine and cosine are glibc's vector ones (libmvec, at most 4 ulp; the scalar ones are
+//    within 1 ulp);
+//  - x mod 2 pi is x - q 2 pi with q = trunc(x / 2 pi), by one fused multiply-add: exact,
+//    as fmod is, since the remainder is a multiple of ulp(2 pi) below 2^53 of them (where
+//    x / 2 pi rounds across an integer, q is off by one and the remainder is the same
+//    angle less or more 2 pi);
+//  - nothing else is fused: the file is compiled with -ffp-contract=off (CMakeLists.txt),
+//    so every other product is rounded before its sum, as in the scalar build.
+// Kepler's iteration runs per lane: a lane stops updating when its step is below 1e-12, as
+// the scalar loop exits. The differences stay far inside kSgp4X4PositionError_m (1 mm;
+// docs/VALIDATION.md, test/sgp4/sgp4_x4_test.cpp). Anything unusual (an error or decay, a
+// short-period correction beyond the rotation range) sends the lane back to propagate_min.
+#include "evade/sgp4/sgp4.hpp"
+
+#include <cmath>
+
+#if defined(__x86_64__) && defined(EVADE_HAVE_LIBMVEC)
+#include <immintrin.h>
+#define EVADE_SGP4_X4 1
+#endif
+
+namespace evade::sgp4 {
+
+namespace {
+
+// One lane after the other (no AVX2, or the vector library is absent).
+void propagate_near_scalar(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                           double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept {
+  for (int k = 0; k < 4; ++k) {
+    const Sgp4State s = p[k]->propagate_min(tsince_min[k]);
+    ok[k] = s.error == Sgp4Error::kNone;
+    for (int a = 0; a < 3; ++a) {
+      r_teme_m[k][a] = s.r_teme_m[a];
+      v_teme_mps[k][a] = s.v_teme_mps[a];
+    }
+  }
+}
+
+}  // namespace
+
+#ifdef EVADE_SGP4_X4
+
+extern "C" {
+__attribute__((target("avx2,fma"))) __m256d _ZGVdN4v_sin(__m256d x);  // glibc libmvec
+__attribute__((target("avx2,fma"))) __m256d _ZGVdN4v_cos(__m256d x);
+}
+
+namespace {
+
+#define EVADE_AVX2 __attribute__((target("avx2,fma"), always_inline)) inline
+
+using V = __m256d;
+
+EVADE_AVX2 V splat(double x) { return _mm256_set1_pd(x); }
+EVADE_AVX2 V add(V a, V b) { return _mm256_add_pd(a, b); }
+EVADE_AVX2 V sub(V a, V b) { return _mm256_sub_pd(a, b); }
+EVADE_AVX2 V mul(V a, V b) { return _mm256_mul_pd(a, b); }
+EVADE_AVX2 V dvd(V a, V b) { return _mm256_div_pd(a, b); }
+EVADE_AVX2 V vsqrt(V a) { return _mm256_sqrt_pd(a); }
+EVADE_AVX2 V vabs(V a) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), a); }
+EVADE_AVX2 V ge(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
+EVADE_AVX2 V lt(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
+EVADE_AVX2 V gt(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
+EVADE_AVX2 V le(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LE_OQ); }
+EVADE_AVX2 V vand(V a, V b) { return _mm256_and_pd(a, b); }
+EVADE_AVX2 V vor(V a, V b) { return _mm256_or_pd(a, b); }
+EVADE_AVX2 V pick(V mask, V yes, V no) { return _mm256_blendv_pd(no, yes, mask); }
+EVADE_AVX2 bool any(V mask) { return _mm256_movemask_pd(mask) != 0; }
+
+// x - trunc(x / 2 pi) 2 pi with one rounding of the exact value: x mod 2 pi with the sign
+// of x, as fmod.
+EVADE_AVX2 V mod_two_pi(V x) {
+  constexpr double kTwoPi = 2.0 * 3.14159265358979323846;  // sgp4.cpp's kTwoPi
+  const V q = _mm256_round_pd(dvd(x, splat(kTwoPi)), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+  return _mm256_fnmadd_pd(q, splat(kTwoPi), x);
+}
+
+struct SC {
+  V s, c;
+};
+
+// sgp4.cpp's rotate: sin and cos of a + d from those of a, Taylor series of sin d and cos d.
+EVADE_AVX2 SC rotate(SC a, V d) {
+  const V d2 = mul(d, d);
+  const V sd = mul(d, add(splat(1.0), mul(d2, add(splat(-1.0 / 6.0),
+                                             mul(d2, add(splat(1.0 / 120.0), mul(d2, splat(-1.0 / 5040.0))))))));
+  const V cd = add(splat(1.0),
+                   mul(d2, add(splat(-0.5),
+                               mul(d2, add(splat(1.0 / 24.0),
+                                           mul(d2, add(splat(-1.0 / 720.0), mul(d2, splat(1.0 / 40320.0)))))))));
+  return {add(mul(a.s, cd), mul(a.c, sd)), sub(mul(a.c, cd), mul(a.s, sd))};
+}
+
+// The per-lane constants of Sgp4Propagator the near-Earth formulas read, lane k in [k].
+struct Lanes {
+  double mo[4], mdot[4], argpo[4], argpdot[4], nodeo[4], nodedot[4], nodecf[4];
+  double cc1[4], bstar_cc4[4], bstar_cc5[4], t2cof[4], t3cof[4], t4cof[4], t5cof[4];
+  double omgcof[4], eta[4], xmcof[4], delmo[4], d2[4], d3[4], d4[4], sinmao[4];
+  double simp[4];  // all-ones bits where isimp (no higher-order drag terms), else 0
+  double no_unkozai[4], ecco[4], am_near[4], xke[4], j2[4], radius_km[4];
+  double sinip[4], cosip[4], con41[4], x1mth2[4], x7thm1[4], aycof[4], xlcof[4];
+};
+
+struct Out {
+  double r[3][4], v[3][4];
+  double bad[4];  // nonzero where the lane must be redone by propagate_min
+};
+
+EVADE_AVX2 V ld(const double* x) { return _mm256_loadu_pd(x); }
+
+// Secular gravity and drag and the perturbed elements (propagate_min up to
+// position_velocity); *bad gets the lanes whose eccentricity leaves [-0.001, 1).
+struct Perturbed {
+  V am, nm, ep, nodep, argpp, mp;
+};
+
+__attribute__((target("avx2,fma"))) Perturbed secular_x4(const Lanes& L, V t, V* bad) noexcept {
+  const V xmdf = add(ld(L.mo), mul(ld(L.mdot), t));
+  const V argpdf = add(ld(L.argpo), mul(ld(L.argpdot), t));
+  const V nodedf = add(ld(L.nodeo), mul(ld(L.nodedot), t));
+  const V t2 = mul(t, t);
+  V mm = xmdf, argpm = argpdf;
+  const V nodem = add(nodedf, mul(ld(L.nodecf), t2));
+  V tempa = sub(splat(1.0), mul(ld(L.cc1), t));
+  V tempe = mul(ld(L.bstar_cc4), t);
+  V templ = mul(ld(L.t2cof), t2);
+  const V simp = ld(L.simp);
+  if (_mm256_movemask_pd(simp) != 0xF) {  // some lane has the higher-order terms
+    const V delomg = mul(ld(L.omgcof), t);
+    const V delmtemp = add(splat(1.0), mul(ld(L.eta), _ZGVdN4v_cos(xmdf)));
+    const V delm = mul(ld(L.xmcof), sub(mul(mul(delmtemp, delmtemp), delmtemp), ld(L.delmo)));
+    const V temp = add(delomg, delm);
+    const V mm_h = add(xmdf, temp);
+    const V t3 = mul(t2, t), t4 = mul(t3, t);
+    const V tempa_h = sub(sub(sub(tempa, mul(ld(L.d2), t2)), mul(ld(L.d3), t3)), mul(ld(L.d4), t4));
+    const V tempe_h = add(tempe, mul(ld(L.bstar_cc5), sub(_ZGVdN4v_sin(mm_h), ld(L.sinmao))));
+    const V templ_h = add(add(templ, mul(ld(L.t3cof), t3)),
+                          mul(t4, add(ld(L.t4cof), mul(t, ld(L.t5cof)))));
+    mm = pick(simp, mm, mm_h);
+    argpm = pick(simp, argpm, sub(argpdf, temp));
+    tempa = pick(simp, tempa, tempa_h);
+    tempe = pick(simp, tempe, tempe_h);
+    templ = pick(simp, templ, templ_h);
+  }
+  Perturbed q;
+  q.am = mul(mul(ld(L.am_near), tempa), tempa);
+  q.nm = dvd(ld(L.xke), mul(q.am, vsqrt(q.am)));
+  V em = sub(ld(L.ecco), tempe);
+  *bad = vor(ge(em, splat(1.0)), lt(em, splat(-0.001)));
+  em = pick(lt(em, splat(1.0e-6)), splat(1.0e-6), em);
+  const V mm0 = add(mm, mul(ld(L.no_unkozai), templ));
+  const V xlm = mod_two_pi(add(add(mm0, argpm), nodem));
+  q.nodep = mod_two_pi(nodem);
+  q.argpp = mod_two_pi(argpm);
+  q.mp = mod_two_pi(sub(sub(xlm, q.argpp), q.nodep));
+  q.ep = em;
+  return q;
+}
+
+// solve_kepler of sgp4.cpp, lane by lane: a lane stops changing once its step is below
+// 1e-12 (or after 10 iterations), as the scalar loop exits.
+__attribute__((target("avx2,fma"))) SC kepler_x4(V u, V axnl, V aynl) noexcept {
+  V eo1 = u, tem5 = splat(9999.9), step = splat(0.0);
+  SC sc{_ZGVdN4v_sin(u), _ZGVdN4v_cos(u)};
+  V active = ge(vabs(tem5), splat(1.0e-12));
+  for (int ktr = 1; ktr <= 10 && any(active); ++ktr) {
+    if (ktr > 1) {
+      SC next = rotate(sc, step);
+      const V big = vand(active, gt(vabs(step), splat(1e-2)));
+      if (any(big)) next = {pick(big, _ZGVdN4v_sin(eo1), next.s), pick(big, _ZGVdN4v_cos(eo1), next.c)};
+      sc = {pick(active, next.s, sc.s), pick(active, next.c, sc.c)};
+    }
+    V t5 = sub(sub(splat(1.0), mul(sc.c, axnl)), mul(sc.s, aynl));
+    t5 = dvd(sub(add(sub(u, mul(aynl, sc.c)), mul(axnl, sc.s)), eo1), t5);
+    const V clamp = ge(vabs(t5), splat(0.95));
+    t5 = pick(clamp, pick(gt(t5, splat(0.0)), splat(0.95), splat(-0.95)), t5);
+    step = pick(active, t5, step);
+    eo1 = pick(active, add(eo1, t5), eo1);
+    tem5 = pick(active, t5, tem5);
+    active = vand(active, ge(vabs(tem5), splat(1.0e-12)));
+  }
+  return sc;
+}
+
+// position_velocity of sgp4.cpp (near-Earth: the epoch inclination's coefficients).
+__attribute__((target("avx2,fma"))) void position_velocity_x4(const Lanes& L, const Perturbed& q,
+                                                          V bad, Out* o) noexcept {
+  const V ep = q.ep, am = q.am;
+  const V axnl = mul(ep, _ZGVdN4v_cos(q.argpp));
+  V temp = dvd(splat(1.0), mul(am, sub(splat(1.0), mul(ep, ep))));
+  const V aynl = add(mul(ep, _ZGVdN4v_sin(q.argpp)), mul(temp, ld(L.aycof)));
+  const V xl = add(add(add(q.mp, q.argpp), q.nodep), mul(mul(temp, ld(L.xlcof)), axnl));
+  const SC ks = kepler_x4(mod_two_pi(sub(xl, q.nodep)), axnl, aynl);
+  const V ecose = add(mul(axnl, ks.c), mul(aynl, ks.s));
+  const V esine = sub(mul(axnl, ks.s), mul(aynl, ks.c));
+  const V el2 = add(mul(axnl, axnl), mul(aynl, aynl));
+  const V pl = mul(am, sub(splat(1.0), el2));
+  bad = vor(bad, vor(lt(pl, splat(0.0)), lt(pl, splat(1.0))));  // pl < 1: corrections may be large
+  const V rl = mul(am, sub(splat(1.0), ecose));
+  const V rdotl = dvd(mul(vsqrt(am), esine), rl);
+  const V rvdotl = dvd(vsqrt(pl), rl);
+  const V betal = vsqrt(sub(splat(1.0), el2));
+  temp = dvd(esine, add(splat(1.0), betal));
+  const V amrl = dvd(am, rl);
+  const V sinu = mul(amrl, sub(sub(ks.s, aynl), mul(axnl, temp)));
+  const V cosu = mul(amrl, add(sub(ks.c, axnl), mul(aynl, temp)));
+  const V sin2u = mul(add(cosu, cosu), sinu);
+  const V cos2u = sub(splat(1.0), mul(mul(splat(2.0), sinu), sinu));
+  temp = dvd(splat(1.0), pl);
+  const V temp1 = mul(mul(splat(0.5), ld(L.j2)), temp);
+  const V temp2 = mul(temp1, temp);
+  const V con41 = ld(L.con41), x1mth2 = ld(L.x1mth2), sinip = ld(L.sinip), cosip = ld(L.cosip);
+  const V mrt = add(mul(rl, sub(splat(1.0), mul(mul(mul(splat(1.5), temp2), betal), con41))),
+                    mul(mul(mul(splat(0.5), temp1), x1mth2), cos2u));
+  const V dsu = mul(mul(mul(splat(-0.25), temp2), ld(L.x7thm1)), sin2u);
+  const V norm = vsqrt(add(mul(sinu, sinu), mul(cosu, cosu)));
+  const SC su = rotate({dvd(sinu, norm), dvd(cosu, norm)}, dsu);
+  const V dinc = mul(mul(mul(mul(splat(1.5), temp2), cosip), sinip), cos2u);
+  const SC inc = rotate({sinip, cosip}, dinc);
+  bad = vor(bad, vor(gt(vabs(dsu), splat(1e-2)), gt(vabs(dinc), splat(1e-2))));
+  const V xnode = add(q.nodep, mul(mul(mul(splat(1.5), temp2), cosip), sin2u));
+  const V xke = ld(L.xke);
+  const V mvt = sub(rdotl, dvd(mul(mul(mul(q.nm, temp1), x1mth2), sin2u), xke));
+  const V rvdot = add(rvdotl, dvd(mul(mul(q.nm, temp1), add(mul(x1mth2, cos2u), mul(splat(1.5), con41))), xke));
+  const V snod = _ZGVdN4v_sin(xnode), cnod = _ZGVdN4v_cos(xnode);
+  const V xmx = mul(_mm256_xor_pd(snod, splat(-0.0)), inc.c), xmy = mul(cnod, inc.c);
+  const V uv[3] = {add(mul(xmx, su.s), mul(cnod, su.c)), add(mul(xmy, su.s), mul(snod, su.c)),
+                   mul(inc.s, su.s)};
+  const V vv[3] = {sub(mul(xmx, su.c), mul(cnod, su.s)), sub(mul(xmy, su.c), mul(snod, su.s)),
+                   mul(inc.s, su.c)};
+  const V vkmpersec = dvd(mul(ld(L.radius_km), xke), splat(60.0));
+  const V mr_km = mul(mrt, ld(L.radius_km));
+  for (int a = 0; a < 3; ++a) {
+    _mm256_storeu_pd(o->r[a], mul(mul(mr_km, uv[a]), splat(1000.0)));
+    _mm256_storeu_pd(o->v[a], mul(mul(add(mul(mvt, uv[a]), mul(rvdot, vv[a])), vkmpersec), splat(1000.0)));
+  }
+  bad = vor(bad, lt(mrt, splat(1.0)));  // decayed
+  _mm256_storeu_pd(o->bad, bad);
+}
+
+__attribute__((target("avx2,fma"))) void propagate_lanes(const Lanes& L, const double tsince_min[4],
+                                                     Out* o) noexcept {
+  V bad;
+  const Perturbed q = secular_x4(L, _mm256_loadu_pd(tsince_min), &bad);
+  position_velocity_x4(L, q, bad, o);
+}
+
+bool avx2_present() noexcept {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+
+}  // namespace
+
+#endif  // EVADE_SGP4_X4
+
+bool sgp4_x4_vectorized() noexcept {
+#ifdef EVADE_SGP4_X4
+  static const bool yes = avx2_present();
+  return yes;
+#else
+  return false;
+#endif
+}
+
+void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                       double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept {
+#ifdef EVADE_SGP4_X4
+  if (sgp4_x4_vectorized()) {
+    Lanes L;
+    for (int k = 0; k < 4; ++k) {
+      const Sgp4Propagator& s = *p[k];
+      L.mo[k] = s.el_.mo_rad;
+      L.mdot[k] = s.ep_.mdot;
+      L.argpo[k] = s.el_.argpo_rad;
+      L.argpdot[k] = s.ep_.argpdot;
+      L.nodeo[k] = s.el_.nodeo_rad;
+      L.nodedot[k] = s.ep_.nodedot;
+      L.nodecf[k] = s.nodecf_;
+      L.cc1[k] = s.cc1_;
+      L.bstar_cc4[k] = s.el_.bstar_per_er * s.cc4_;
+      L.bstar_cc5[k] = s.el_.bstar_per_er * s.cc5_;
+      L.t2cof[k] = s.t2cof_;
+      L.t3cof[k] = s.t3cof_;
+      L.t4cof[k] = s.t4cof_;
+      L.t5cof[k] = s.t5cof_;
+      L.omgcof[k] = s.omgcof_;
+      L.eta[k] = s.eta_;
+      L.xmcof[k] = s.xmcof_;
+      L.delmo[k] = s.delmo_;
+      L.d2[k] = s.d2_;
+      L.d3[k] = s.d3_;
+      L.d4[k] = s.d4_;
+      L.sinmao[k] = s.sinmao_;
+      L.simp[k] = s.isimp_ ? -std::nan("") : 0.0;  // any all-ones-sign pattern: blend mask
+      L.no_unkozai[k] = s.no_unkozai_;
+      L.ecco[k] = s.el_.ecco;
+      L.am_near[k] = s.am_near_;
+      L.xke[k] = s.k_.xke_per_min;
+      L.j2[k] = s.k_.j2;
+      L.radius_km[k] = s.k_.radius_km;
+      L.sinip[k] = s.sin_inclo_;
+      L.cosip[k] = s.cos_inclo_;
+      L.con41[k] = s.near_.con41;
+      L.x1mth2[k] = s.near_.x1mth2;
+      L.x7thm1[k] = s.near_.x7thm1;
+      L.aycof[k] = s.near_.aycof;
+      L.xlcof[k] = s.near_.xlcof;
+    }
+    Out o;
+    propagate_lanes(L, tsince_min, &o);
+    for (int k = 0; k < 4; ++k) {
+      ok[k] = o.bad[k] == 0.0;  // the mask's lanes are all-ones bits (a NaN) or zero
+      for (int a = 0; a < 3; ++a) {
+        r_teme_m[k][a] = o.r[a][k];
+        v_teme_mps[k][a] = o.v[a][k];
+      }
+    }
+    return;
+  }
+#endif
+  propagate_near_scalar(p, tsince_min, r_teme_m, v_teme_mps, ok);
+}
+
+}  // namespace evade::sgp4
