@@ -2,7 +2,7 @@
 // step (internal/box_grid.hpp). Cells are as large as the largest box, and at least 1/1200
 // of the boxes' extent so that a cell key fits the entries (a short last grid step's small
 // boxes spread from LEO to GEO once overflowed it, and pairs were lost), the same cells at
-// every coordinate (floor(x / cell), clamped); each box goes into the cells it touches, and
+// every coordinate (floor(x / cell), as x times 1 / cell, clamped); each box goes into the cells it touches, and
 // the (cell, object) entries are sorted by cell with a stable LSD radix sort, so that pairs
 // can be formed per cell in object order.
 #include "evade/conjunction/internal/box_grid.hpp"
@@ -17,10 +17,11 @@
 namespace evade::conjunction::internal {
 namespace {
 
-// Cell of coordinate x in a uniform grid of cell size cell_m (the same cells at every step:
-// floor(x / cell), clamped).
-std::int64_t cell_index(double x, double cell_m) {
-  return static_cast<std::int64_t>(std::clamp(std::floor(x / cell_m), -4e6, 4e6));
+// Cell of coordinate x in a uniform grid of cells 1 / inv_cell_m wide: floor(x inv_cell_m),
+// clamped. Nondecreasing in x, which is all the grid needs: a box [lo, hi] goes into the
+// cells from cell_index(lo) to cell_index(hi), so two overlapping boxes share a cell.
+std::int64_t cell_index(double x, double inv_cell_m) {
+  return static_cast<std::int64_t>(std::clamp(std::floor(x * inv_cell_m), -4e6, 4e6));
 }
 
 // Stable LSD radix sort of (cell key << 32 | object) by the key's low `key_bits` bits; the
@@ -60,9 +61,10 @@ void BoxGrid::build(std::size_t n) {
   // and fits the entries' layout (key << 32 | object); larger cells only pair more boxes.
   cell = std::max(cell, (hi_max - lo_min).maxCoeff() / kMaxCellsPerAxis);
   cell_m = cell;
+  const double inv_cell = 1.0 / cell;
   for (int a = 0; a < 3; ++a) {
-    origin[a] = cell_index(lo_min[a], cell);
-    extent[a] = cell_index(hi_max[a], cell) - origin[a] + 1;
+    origin[a] = cell_index(lo_min[a], inv_cell);
+    extent[a] = cell_index(hi_max[a], inv_cell) - origin[a] + 1;
   }
   box.resize(n);
   entries.clear();
@@ -70,8 +72,8 @@ void BoxGrid::build(std::size_t n) {
     std::int64_t c0[3], c1[3];
     GridBox& b = box[i];
     for (int a = 0; a < 3; ++a) {
-      c0[a] = cell_index(lo[i][a], cell) - origin[a];
-      c1[a] = cell_index(hi[i][a], cell) - origin[a];
+      c0[a] = cell_index(lo[i][a], inv_cell) - origin[a];
+      c1[a] = cell_index(hi[i][a], inv_cell) - origin[a];
       b.lo[a] = lo[i][a];
       b.hi[a] = hi[i][a];
       b.cell[a] = static_cast<std::int32_t>(c0[a]);

@@ -138,21 +138,24 @@ void Worker::screen_step(const StateEci* sa, const StateEci* sb, double t_a, dou
   const std::vector<std::uint64_t>& e = grid.entries;
   for (std::size_t r0 = 0; r0 < e.size();) {
     const std::uint64_t key = e[r0] >> 32;
-    cell_obj.clear();
-    for (auto& c : cell_box) c.clear();
-    for (auto& c : cell_low) c.clear();
-    std::size_t r1 = r0;
-    for (; r1 < e.size() && (e[r1] >> 32) == key; ++r1) {
-      const auto i = static_cast<std::uint32_t>(e[r1] & 0xffffffffu);
-      const GridBox& b = grid.box[i];
-      cell_obj.push_back(i);
-      for (std::size_t a = 0; a < 3; ++a) {
-        cell_box[a].push_back(b.lo[a]);
-        cell_box[a + 3].push_back(b.hi[a]);
-        cell_low[a].push_back(b.cell[a]);
+    std::size_t r1 = r0 + 1;
+    while (r1 < e.size() && (e[r1] >> 32) == key) ++r1;
+    if (r1 - r0 > 1) {  // a cell with one box holds no pair
+      cell_obj.clear();
+      for (auto& c : cell_box) c.clear();
+      for (auto& c : cell_low) c.clear();
+      for (std::size_t r = r0; r < r1; ++r) {
+        const auto i = static_cast<std::uint32_t>(e[r] & 0xffffffffu);
+        const GridBox& b = grid.box[i];
+        cell_obj.push_back(i);
+        for (std::size_t a = 0; a < 3; ++a) {
+          cell_box[a].push_back(b.lo[a]);
+          cell_box[a + 3].push_back(b.hi[a]);
+          cell_low[a].push_back(b.cell[a]);
+        }
       }
+      screen_cell(key, sa, sb, t_a, t_b);
     }
-    if (r1 - r0 > 1) screen_cell(key, sa, sb, t_a, t_b);
     r0 = r1;
   }
 }

@@ -30,9 +30,10 @@ void expect_entries_in_their_boxes(const BoxGrid& g, std::size_t n) {
     const std::int64_t y = static_cast<std::int64_t>(xy % static_cast<std::uint64_t>(g.extent[1]));
     const std::int64_t x = static_cast<std::int64_t>(xy / static_cast<std::uint64_t>(g.extent[1]));
     const std::int64_t cell[3] = {x, y, z};
+    const double inv_cell = 1.0 / g.cell_m;  // the grid's cells: floor(x / cell) as x (1 / cell)
     for (int a = 0; a < 3; ++a) {
-      const auto c0 = static_cast<std::int64_t>(std::floor(g.lo[i][a] / g.cell_m)) - g.origin[a];
-      const auto c1 = static_cast<std::int64_t>(std::floor(g.hi[i][a] / g.cell_m)) - g.origin[a];
+      const auto c0 = static_cast<std::int64_t>(std::floor(g.lo[i][a] * inv_cell)) - g.origin[a];
+      const auto c1 = static_cast<std::int64_t>(std::floor(g.hi[i][a] * inv_cell)) - g.origin[a];
       EXPECT_GE(cell[a], c0) << "object " << i << " axis " << a;
       EXPECT_LE(cell[a], c1) << "object " << i << " axis " << a;
     }
