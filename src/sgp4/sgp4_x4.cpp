@@ -46,9 +46,11 @@ void propagate_near_scalar(const Sgp4Propagator* const p[4], const double tsince
 
 #ifdef EVADE_SGP4_X4
 
+// glibc's libmvec sine and cosine of four doubles (its x86-64 vector ABI names, AVX2 'd'
+// variant: at most 4 ulp).
 extern "C" {
-__attribute__((target("avx2,fma"))) __m256d _ZGVdN4v_sin(__m256d x);  // glibc libmvec
-__attribute__((target("avx2,fma"))) __m256d _ZGVdN4v_cos(__m256d x);
+__attribute__((target("avx2,fma"))) __m256d sin_x4(__m256d x) __asm__("_ZGVdN4v_sin");
+__attribute__((target("avx2,fma"))) __m256d cos_x4(__m256d x) __asm__("_ZGVdN4v_cos");
 }
 
 namespace {
@@ -67,7 +69,6 @@ EVADE_AVX2 V vabs(V a) { return _mm256_andnot_pd(_mm256_set1_pd(-0.0), a); }
 EVADE_AVX2 V ge(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
 EVADE_AVX2 V lt(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
 EVADE_AVX2 V gt(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
-EVADE_AVX2 V le(V a, V b) { return _mm256_cmp_pd(a, b, _CMP_LE_OQ); }
 EVADE_AVX2 V vand(V a, V b) { return _mm256_and_pd(a, b); }
 EVADE_AVX2 V vor(V a, V b) { return _mm256_or_pd(a, b); }
 EVADE_AVX2 V pick(V mask, V yes, V no) { return _mm256_blendv_pd(no, yes, mask); }
@@ -133,13 +134,13 @@ __attribute__((target("avx2,fma"))) Perturbed secular_x4(const Lanes& L, V t, V*
   const V simp = ld(L.simp);
   if (_mm256_movemask_pd(simp) != 0xF) {  // some lane has the higher-order terms
     const V delomg = mul(ld(L.omgcof), t);
-    const V delmtemp = add(splat(1.0), mul(ld(L.eta), _ZGVdN4v_cos(xmdf)));
+    const V delmtemp = add(splat(1.0), mul(ld(L.eta), cos_x4(xmdf)));
     const V delm = mul(ld(L.xmcof), sub(mul(mul(delmtemp, delmtemp), delmtemp), ld(L.delmo)));
     const V temp = add(delomg, delm);
     const V mm_h = add(xmdf, temp);
     const V t3 = mul(t2, t), t4 = mul(t3, t);
     const V tempa_h = sub(sub(sub(tempa, mul(ld(L.d2), t2)), mul(ld(L.d3), t3)), mul(ld(L.d4), t4));
-    const V tempe_h = add(tempe, mul(ld(L.bstar_cc5), sub(_ZGVdN4v_sin(mm_h), ld(L.sinmao))));
+    const V tempe_h = add(tempe, mul(ld(L.bstar_cc5), sub(sin_x4(mm_h), ld(L.sinmao))));
     const V templ_h = add(add(templ, mul(ld(L.t3cof), t3)),
                           mul(t4, add(ld(L.t4cof), mul(t, ld(L.t5cof)))));
     mm = pick(simp, mm, mm_h);
@@ -167,13 +168,13 @@ __attribute__((target("avx2,fma"))) Perturbed secular_x4(const Lanes& L, V t, V*
 // 1e-12 (or after 10 iterations), as the scalar loop exits.
 __attribute__((target("avx2,fma"))) SC kepler_x4(V u, V axnl, V aynl) noexcept {
   V eo1 = u, tem5 = splat(9999.9), step = splat(0.0);
-  SC sc{_ZGVdN4v_sin(u), _ZGVdN4v_cos(u)};
+  SC sc{sin_x4(u), cos_x4(u)};
   V active = ge(vabs(tem5), splat(1.0e-12));
   for (int ktr = 1; ktr <= 10 && any(active); ++ktr) {
     if (ktr > 1) {
       SC next = rotate(sc, step);
       const V big = vand(active, gt(vabs(step), splat(1e-2)));
-      if (any(big)) next = {pick(big, _ZGVdN4v_sin(eo1), next.s), pick(big, _ZGVdN4v_cos(eo1), next.c)};
+      if (any(big)) next = {pick(big, sin_x4(eo1), next.s), pick(big, cos_x4(eo1), next.c)};
       sc = {pick(active, next.s, sc.s), pick(active, next.c, sc.c)};
     }
     V t5 = sub(sub(splat(1.0), mul(sc.c, axnl)), mul(sc.s, aynl));
@@ -192,9 +193,9 @@ __attribute__((target("avx2,fma"))) SC kepler_x4(V u, V axnl, V aynl) noexcept {
 __attribute__((target("avx2,fma"))) void position_velocity_x4(const Lanes& L, const Perturbed& q,
                                                           V bad, Out* o) noexcept {
   const V ep = q.ep, am = q.am;
-  const V axnl = mul(ep, _ZGVdN4v_cos(q.argpp));
+  const V axnl = mul(ep, cos_x4(q.argpp));
   V temp = dvd(splat(1.0), mul(am, sub(splat(1.0), mul(ep, ep))));
-  const V aynl = add(mul(ep, _ZGVdN4v_sin(q.argpp)), mul(temp, ld(L.aycof)));
+  const V aynl = add(mul(ep, sin_x4(q.argpp)), mul(temp, ld(L.aycof)));
   const V xl = add(add(add(q.mp, q.argpp), q.nodep), mul(mul(temp, ld(L.xlcof)), axnl));
   const SC ks = kepler_x4(mod_two_pi(sub(xl, q.nodep)), axnl, aynl);
   const V ecose = add(mul(axnl, ks.c), mul(aynl, ks.s));
@@ -228,7 +229,7 @@ __attribute__((target("avx2,fma"))) void position_velocity_x4(const Lanes& L, co
   const V xke = ld(L.xke);
   const V mvt = sub(rdotl, dvd(mul(mul(mul(q.nm, temp1), x1mth2), sin2u), xke));
   const V rvdot = add(rvdotl, dvd(mul(mul(q.nm, temp1), add(mul(x1mth2, cos2u), mul(splat(1.5), con41))), xke));
-  const V snod = _ZGVdN4v_sin(xnode), cnod = _ZGVdN4v_cos(xnode);
+  const V snod = sin_x4(xnode), cnod = cos_x4(xnode);
   const V xmx = mul(_mm256_xor_pd(snod, splat(-0.0)), inc.c), xmy = mul(cnod, inc.c);
   const V uv[3] = {add(mul(xmx, su.s), mul(cnod, su.c)), add(mul(xmy, su.s), mul(snod, su.c)),
                    mul(inc.s, su.s)};
