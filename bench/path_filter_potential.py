@@ -10,7 +10,8 @@ filter could set aside on a catalog, after the perigee/apogee filter, over the s
   - every object is propagated with python `sgp4` (SatrecArray) every --radius-step-s seconds
     from the latest element epoch (the screen's start) over --span-s, and so is the primary;
   - perigee/apogee (sampled): objects whose sampled radius range overlaps the primary's
-    within D survive (the shipped filter bounds the ranges; sampling keeps about as many);
+    within D survive (fewer than the shipped filter keeps: its proven bounds allow for the
+    drift and one more orbit, so this count errs towards what a path filter could remove);
     the survivors are propagated again every --step-s seconds;
   - for each survivor, each crossing of the primary's instantaneous orbit plane (sign
     change of n_p . r_j, linearly interpolated) gives the object's radius |r_j| and the
@@ -66,7 +67,9 @@ def main():
     a = ap.parse_args()
     mu = 398600.8e9  # WGS-72, the theory's constant [m^3/s^2]
     sats = read_tles(a.tle)
-    prim = [s for s in sats if s.satnum == a.primary][0]
+    prim = next((s for s in sats if s.satnum == a.primary), None)
+    if prim is None:
+        raise SystemExit(f"path_filter_potential: no element set with catalog number {a.primary} in {a.tle}")
     others = [s for s in sats if s.satnum != a.primary]
     start = max(s.jdsatepoch + s.jdsatepochF for s in sats)
     jd, fr = times(start, a.span_s, a.radius_step_s)
