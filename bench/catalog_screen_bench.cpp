@@ -8,8 +8,9 @@
 //   BM_Sgp4State         : one SGP4 state (position and SGP4's velocity) of every object of
 //                          the catalog at 100 instants over a day; arg 0: the near-Earth
 //                          objects (SGP4), 1: the deep-space ones (SDP4). Time per state.
-//   BM_Sgp4StateX4       : the near-Earth states of BM_Sgp4State(0), four at a time
-//                          (propagate_near_x4, AVX2 where the processor has it).
+//   BM_Sgp4StateX4       : the states of BM_Sgp4State(arg), four at a time
+//                          (propagate_near_x4, propagate_deep_x4; AVX2 where the processor
+//                          has it).
 // Run from the repository root (the catalog path is relative to it; EVADE_CATALOG overrides):
 //   build/bench/catalog_screen_bench --benchmark_filter=Sgp4Catalog
 // Results and machine: docs/PERFORMANCE.md.
@@ -83,14 +84,16 @@ void BM_Sgp4State(benchmark::State& state) {
 }
 BENCHMARK(BM_Sgp4State)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-// The near-Earth states of BM_Sgp4State(0), four objects at a time (propagate_near_x4).
+// The states of BM_Sgp4State(arg), four objects at a time (propagate_near_x4, propagate_deep_x4).
 void BM_Sgp4StateX4(benchmark::State& state) {
   sgp4::Catalog cat;
   if (!read_catalog(state, cat)) return;
+  const bool deep = state.range(0) == 1;
+  const auto x4 = deep ? sgp4::propagate_deep_x4 : sgp4::propagate_near_x4;
   std::vector<sgp4::Sgp4Propagator> props;
   for (const auto& m : cat.objects) {
     sgp4::Sgp4Propagator p(m);
-    if (p.init_error() == sgp4::Sgp4Error::kNone && !p.deep_space()) props.push_back(p);
+    if (p.init_error() == sgp4::Sgp4Error::kNone && p.deep_space() == deep) props.push_back(p);
   }
   const std::size_t n4 = props.size() / 4 * 4;
   long states = 0;
@@ -102,7 +105,7 @@ void BM_Sgp4StateX4(benchmark::State& state) {
         const sgp4::Sgp4Propagator* p[4] = {&props[g], &props[g + 1], &props[g + 2], &props[g + 3]};
         double r[4][3], v[4][3];
         bool ok[4];
-        sgp4::propagate_near_x4(p, tk, r, v, ok);
+        x4(p, tk, r, v, ok);
         benchmark::DoNotOptimize(r);
       }
     }
@@ -113,7 +116,7 @@ void BM_Sgp4StateX4(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(states) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.SetLabel(sgp4::sgp4_x4_vectorized() ? "AVX2" : "scalar lanes");
 }
-BENCHMARK(BM_Sgp4StateX4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Sgp4StateX4)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(BM_Sgp4CatalogSetup)->Arg(24)->Arg(168)->MeasureProcessCPUTime()->UseRealTime()
     ->Unit(benchmark::kSecond)->Iterations(1);

@@ -72,17 +72,18 @@ struct Envelope {
   }
 };
 
-// The positions at offset_s + t_s[k] (k < n), four at a time (sgp4::propagate_near_x4: within
-// kSgp4X4PositionErrorRel |r| of propagate_s's); ok[k] 0 where that flagged the instant
-// (propagate_s then decides).
+// The positions at offset_s + t_s[k] (k < n), four at a time (sgp4::propagate_near_x4 or
+// propagate_deep_x4: within kSgp4X4PositionErrorRel |r| of propagate_s's); ok[k] 0 where that
+// flagged the instant (propagate_s then decides).
 void envelope_positions(const sgp4::Sgp4Propagator& p, double offset_s, const double* t_s,
                         std::size_t n, Vec3* r, char* ok) {
   const sgp4::Sgp4Propagator* lanes[4] = {&p, &p, &p, &p};
+  const auto x4 = p.deep_space() ? sgp4::propagate_deep_x4 : sgp4::propagate_near_x4;
   for (std::size_t b = 0; b < n; b += 4) {
     double tsince_min[4], rk[4][3], vk[4][3];
     bool okk[4];
     for (std::size_t k = 0; k < 4; ++k) tsince_min[k] = (offset_s + t_s[std::min(b + k, n - 1)]) / 60.0;
-    sgp4::propagate_near_x4(lanes, tsince_min, rk, vk, okk);
+    x4(lanes, tsince_min, rk, vk, okk);
     for (std::size_t k = 0; k < 4 && b + k < n; ++k) {
       r[b + k] = Vec3(rk[k][0], rk[k][1], rk[k][2]);
       ok[b + k] = okk[k] ? 1 : 0;
@@ -97,9 +98,9 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
       envelope_sample_times(86400.0 / m.mean_motion_revpday, m.eccentricity, opt);
   const double h = opt.envelope_step_s;
   const double n_max = n_max_radps(m), n2 = n_max * n_max;
-  // Every instant of the stencils (t - h, t, t + h per sample); a near-Earth object's four at
-  // a time where the processor allows.
-  const bool x4 = sgp4::sgp4_x4_vectorized() && !p.deep_space();
+  // Every instant of the stencils (t - h, t, t + h per sample), four at a time where the
+  // processor allows.
+  const bool x4 = sgp4::sgp4_x4_vectorized();
   std::vector<double> ts(3 * times.size());
   for (std::size_t s = 0; s < times.size(); ++s)
     for (std::size_t k = 0; k < 3; ++k) ts[3 * s + k] = times[s] + (static_cast<double>(k) - 1.0) * h;
@@ -107,8 +108,10 @@ Envelope sample_envelope(const sgp4::Sgp4Propagator& p, double offset_s,
   std::vector<char> ok(ts.size(), 0);
   if (x4) envelope_positions(p, offset_s, ts.data(), ts.size(), pos.data(), ok.data());
   // Each position within the jumps 4e-12 |r| (sgp4_motion.hpp) and, four at a time, within a
-  // further kSgp4X4PositionErrorRel |r| of propagate_s's.
-  const double jump_rel = 4e-12 + (x4 ? sgp4::kSgp4X4PositionErrorRel : 0.0);
+  // further kSgp4X4PositionErrorRel |r| (deep space: kSgp4X4DeepPositionErrorRel) of
+  // propagate_s's.
+  const double x4_rel = p.deep_space() ? sgp4::kSgp4X4DeepPositionErrorRel : sgp4::kSgp4X4PositionErrorRel;
+  const double jump_rel = 4e-12 + (x4 ? x4_rel : 0.0);
   Envelope env;
   for (std::size_t s = 0; s < times.size(); ++s) {
     Vec3 q[3];
@@ -249,9 +252,11 @@ StateEci Sgp4Motion::grid_state_at(std::size_t i, double t_s) const {
 
 void Sgp4Motion::grid_states_at(double t_s, std::size_t begin, std::size_t end,
                                 StateEci* out) const {
-  std::size_t lane[4];
-  int n = 0;
-  const auto run = [&]() {
+  std::size_t lanes[2][4];  // near-Earth, deep-space objects waiting for a group of four
+  int count[2] = {0, 0};
+  const auto run = [&](int deep) {
+    const std::size_t* lane = lanes[deep];
+    int& n = count[deep];
     const sgp4::Sgp4Propagator* p[4];
     double tsince_min[4], r[4][3], v[4][3];
     bool ok[4];
@@ -260,7 +265,11 @@ void Sgp4Motion::grid_states_at(double t_s, std::size_t begin, std::size_t end,
       p[k] = &props_[i];
       tsince_min[k] = (offset_s_[i] + t_s) / 60.0;  // as propagate_s
     }
-    sgp4::propagate_near_x4(p, tsince_min, r, v, ok);
+    if (deep != 0) {
+      sgp4::propagate_deep_x4(p, tsince_min, r, v, ok);
+    } else {
+      sgp4::propagate_near_x4(p, tsince_min, r, v, ok);
+    }
     for (int k = 0; k < n; ++k) {
       const std::size_t i = lane[k];
       out[i] = ok[k] ? StateEci{Vec3(r[k][0], r[k][1], r[k][2]), Vec3(v[k][0], v[k][1], v[k][2])}
@@ -273,10 +282,12 @@ void Sgp4Motion::grid_states_at(double t_s, std::size_t begin, std::size_t end,
       out[i] = grid_state_at(i, t_s);
       continue;
     }
-    lane[n++] = i;
-    if (n == 4) run();
+    const int deep = deep_lane(i) ? 1 : 0;
+    lanes[deep][count[deep]++] = i;
+    if (count[deep] == 4) run(deep);
   }
-  if (n > 0) run();
+  for (int deep = 0; deep < 2; ++deep)
+    if (count[deep] > 0) run(deep);
 }
 
 double Sgp4Motion::grid_velocity_error_mps(std::size_t i) const {
@@ -287,9 +298,7 @@ double Sgp4Motion::grid_velocity_error_mps(std::size_t i) const {
   return kErrorMps + (four_lane(i) ? 1e-6 : 0.0);
 }
 
-double Sgp4Motion::grid_position_error_m(std::size_t i) const {
-  return four_lane(i) ? sgp4::kSgp4X4PositionError_m : 0.0;
-}
+double Sgp4Motion::grid_position_error_m(std::size_t i) const { return grid_err_m_[i]; }
 
 bool Sgp4Motion::acceleration_at(std::size_t i, double t_s, Vec3& a_mps2, double& error_mps2) const {
   const double h = accel_step_s_, t = offset_s_[i] + t_s;
@@ -392,7 +401,8 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   if (env.failure != sgp4::Sgp4Error::kNone) return env.reason();
   mo.props_.push_back(prop);
   mo.offset_s_.push_back(offset_s);
-  mo.four_lane_.push_back(sgp4::sgp4_x4_vectorized() && !prop.deep_space() ? 1 : 0);
+  const char lanes = !sgp4::sgp4_x4_vectorized() ? char{0} : prop.deep_space() ? char{2} : char{1};
+  mo.four_lane_.push_back(lanes);
   mo.norad_.push_back(m.norad_id);
   mo.names_.push_back(m.name);
   const std::size_t i = mo.props_.size() - 1;
@@ -430,6 +440,10 @@ std::string Sgp4CatalogBuilder::accept(Sgp4Motion& mo, const sgp4::MeanElements&
   const double a_m = std::cbrt(earth.mu_m3ps2 / (n_radps * n_radps));
   const double r_max = 1.1 * a_m * (1.0 + e), tau = opt.velocity_step_s;
   mo.v_err_mps_.push_back(tau * tau * n_max * n_max * n_max * r_max / 3.0 + 4e-12 * r_max / tau);
+  mo.grid_err_m_.push_back(!mo.four_lane(i) ? 0.0
+                           : mo.deep_lane(i) ? std::max(sgp4::kSgp4X4PositionError_m,
+                                                        10.0 * sgp4::kSgp4X4DeepPositionErrorRel * r_max)
+                                             : sgp4::kSgp4X4PositionError_m);
   return {};
 }
 

@@ -284,7 +284,8 @@ Sgp4Propagator::Short Sgp4Propagator::short_period(double sinip, double cosip) c
   return s;
 }
 
-Sgp4State Sgp4Propagator::propagate_min(double t) const noexcept {
+Sgp4Error Sgp4Propagator::mean_min(double t, PerturbedElements& p, double& am,
+                                   double& nm) const noexcept {
   // Secular gravity and atmospheric drag.
   const double xmdf = el_.mo_rad + ep_.mdot * t;
   const double argpdf = el_.argpo_rad + ep_.argpdot * t;
@@ -313,29 +314,41 @@ Sgp4State Sgp4Propagator::propagate_min(double t) const noexcept {
   m.em = el_.ecco;
   m.inclm = el_.inclo_rad;
   if (deep_) deep_space_secular(ds_, ep_, t, m);
-  if (m.nm <= 0.0) return failed(Sgp4Error::kMeanMotion);
-  const double am = (deep_ ? std::pow(k_.xke_per_min / m.nm, kX2o3) : am_near_) * tempa * tempa;
-  const double nm = k_.xke_per_min / (am * std::sqrt(am));  // am^1.5
+  if (m.nm <= 0.0) return Sgp4Error::kMeanMotion;
+  am = (deep_ ? std::pow(k_.xke_per_min / m.nm, kX2o3) : am_near_) * tempa * tempa;
+  nm = k_.xke_per_min / (am * std::sqrt(am));  // am^1.5
   double em = m.em - tempe;
-  if (em >= 1.0 || em < -0.001) return failed(Sgp4Error::kMeanEccentricity);
+  if (em >= 1.0 || em < -0.001) return Sgp4Error::kMeanEccentricity;
   if (em < 1.0e-6) em = 1.0e-6;
   const double mm0 = m.mm + no_unkozai_ * templ;
   const double xlm = std::fmod(mm0 + m.argpm + m.nodem, kTwoPi);
-  PerturbedElements p;
   p.nodep = std::fmod(m.nodem, kTwoPi);
   p.argpp = std::fmod(m.argpm, kTwoPi);
   p.mp = std::fmod(xlm - p.argpp - p.nodep, kTwoPi);
   p.ep = em;
   p.inclp = m.inclm;
-  if (deep_) {
-    deep_space_periodics(ds_.periodics, t, mode_, p);
-    if (p.inclp < 0.0) {
-      p.inclp = -p.inclp;
-      p.nodep = p.nodep + kPi;
-      p.argpp = p.argpp - kPi;
-    }
-    if (p.ep < 0.0 || p.ep > 1.0) return failed(Sgp4Error::kPerturbedEccentricity);
+  return Sgp4Error::kNone;
+}
+
+Sgp4Error Sgp4Propagator::perturbed_min(double t, PerturbedElements& p, double& am,
+                                        double& nm) const noexcept {
+  const Sgp4Error e = mean_min(t, p, am, nm);
+  if (e != Sgp4Error::kNone || !deep_) return e;
+  deep_space_periodics(ds_.periodics, t, mode_, p);
+  if (p.inclp < 0.0) {
+    p.inclp = -p.inclp;
+    p.nodep = p.nodep + kPi;
+    p.argpp = p.argpp - kPi;
   }
+  if (p.ep < 0.0 || p.ep > 1.0) return Sgp4Error::kPerturbedEccentricity;
+  return Sgp4Error::kNone;
+}
+
+Sgp4State Sgp4Propagator::propagate_min(double t) const noexcept {
+  PerturbedElements p;
+  double am = 0.0, nm = 0.0;
+  const Sgp4Error e = perturbed_min(t, p, am, nm);
+  if (e != Sgp4Error::kNone) return failed(e);
   return position_velocity(p, am, nm);
 }
 

@@ -16,6 +16,9 @@
 // the scalar loop exits. The differences stay far inside kSgp4X4PositionError_m (1 mm;
 // docs/VALIDATION.md, test/sgp4/sgp4_x4_test.cpp). Anything unusual (an error or decay, a
 // short-period correction beyond the rotation range) sends the lane back to propagate_min.
+// Deep-space lanes (propagate_deep_x4, SDP4) take their secular, resonance and lunar-solar
+// terms from the scalar code lane by lane (Sgp4Propagator::perturbed_min) and share the rest
+// (position_velocity_x4), with the perturbed inclination's sine and cosine from libmvec.
 #include "evade/sgp4/sgp4.hpp"
 
 #include <cmath>
@@ -30,7 +33,7 @@ namespace evade::sgp4 {
 namespace {
 
 // One lane after the other (no AVX2, or the vector library is absent).
-void propagate_near_scalar(const Sgp4Propagator* const p[4], const double tsince_min[4],
+void propagate_scalar(const Sgp4Propagator* const p[4], const double tsince_min[4],
                            double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept {
   for (int k = 0; k < 4; ++k) {
     const Sgp4State s = p[k]->propagate_min(tsince_min[k]);
@@ -51,6 +54,7 @@ void propagate_near_scalar(const Sgp4Propagator* const p[4], const double tsince
 extern "C" {
 __attribute__((target("avx2,fma"))) __m256d sin_x4(__m256d x) __asm__("_ZGVdN4v_sin");
 __attribute__((target("avx2,fma"))) __m256d cos_x4(__m256d x) __asm__("_ZGVdN4v_cos");
+__attribute__((target("avx2,fma"))) __m256d atan2_x4(__m256d y, __m256d x) __asm__("_ZGVdN4vv_atan2");
 }
 
 namespace {
@@ -190,7 +194,7 @@ __attribute__((target("avx2,fma"))) SC kepler_x4(V u, V axnl, V aynl) noexcept {
 }
 
 // position_velocity of sgp4.cpp (near-Earth: the epoch inclination's coefficients).
-__attribute__((target("avx2,fma"))) void position_velocity_x4(const Lanes& L, const Perturbed& q,
+__attribute__((target("avx2,fma"), always_inline)) inline void position_velocity_x4(const Lanes& L, const Perturbed& q,
                                                           V bad, Out* o) noexcept {
   const V ep = q.ep, am = q.am;
   const V axnl = mul(ep, cos_x4(q.argpp));
@@ -250,6 +254,113 @@ __attribute__((target("avx2,fma"))) void propagate_lanes(const Lanes& L, const d
   V bad;
   const Perturbed q = secular_x4(L, _mm256_loadu_pd(tsince_min), &bad);
   position_velocity_x4(L, q, bad, o);
+}
+
+// Deep-space lanes: the elements dpper starts from, the semi-major axis and mean motion of each
+// lane from Sgp4Propagator::mean_min, the lunar-solar coefficients (deep_space.hpp's
+// LunarSolarPeriodics) and the operation mode; bad all-ones bits where mean_min reported an
+// error.
+struct DeepIn {
+  double am[4], nm[4], ep[4], inclp[4], nodep[4], argpp[4], mp[4], bad[4];
+  double e3[4], ee2[4], se2[4], se3[4], sgh2[4], sgh3[4], sgh4[4], sh2[4], sh3[4];
+  double si2[4], si3[4], sl2[4], sl3[4], sl4[4], xgh2[4], xgh3[4], xgh4[4], xh2[4], xh3[4];
+  double xi2[4], xi3[4], xl2[4], xl3[4], xl4[4], zmol[4], zmos[4];
+  double afspc[4];  // 1 where the mode is kAfspc, else 0
+};
+
+// c2 f2 + c3 f3.
+EVADE_AVX2 V sum2(V c2, V f2, V c3, V f3) { return add(mul(c2, f2), mul(c3, f3)); }
+
+// One body's (sun's or moon's) f2, f3 and sin zf at t (dpper): zm = zm0 + n t,
+// zf = zm + 2 e sin zm.
+struct BodyTerms {
+  V f2, f3, sinzf;
+};
+
+EVADE_AVX2 BodyTerms body_terms(V zm0, double n, double e, V t) {
+  const V zm = add(zm0, mul(splat(n), t));
+  const V zf = add(zm, mul(splat(2.0 * e), sin_x4(zm)));
+  const V sinzf = sin_x4(zf);
+  return {sub(mul(mul(splat(0.5), sinzf), sinzf), splat(0.25)),
+          mul(mul(splat(-0.5), sinzf), cos_x4(zf)), sinzf};
+}
+
+// The perturbed elements of the deep-space lanes, and the sine and cosine of their perturbed
+// inclination; bad all-ones bits where the lane goes back to propagate_min.
+struct DeepOut {
+  double ep[4], nodep[4], argpp[4], mp[4], sinip[4], cosip[4], bad[4];
+};
+
+// deep_space_periodics (deep_space.cpp, dpper) over four lanes in its order of operations,
+// both of its branches (inclination >= 0.2 rad, else Lyddane's) computed and the lane's one
+// kept, then propagate_min's negative-inclination turn and eccentricity check (bad where the
+// eccentricity leaves [0, 1]).
+__attribute__((target("avx2,fma"))) void periodics_x4(const DeepIn& d, const double t_min[4],
+                                                  DeepOut* o) noexcept {
+  const V t = ld(t_min);
+  constexpr double kPi = 3.14159265358979323846, kTwoPi = 2.0 * kPi;  // deep_space.cpp's
+  const BodyTerms s = body_terms(ld(d.zmos), 1.19459e-5, 0.01675, t);    // kZns, kZes
+  const BodyTerms l = body_terms(ld(d.zmol), 1.5835218e-4, 0.05490, t);  // kZnl, kZel
+  const V pe = add(sum2(ld(d.se2), s.f2, ld(d.se3), s.f3), sum2(ld(d.ee2), l.f2, ld(d.e3), l.f3));
+  const V pinc = add(sum2(ld(d.si2), s.f2, ld(d.si3), s.f3), sum2(ld(d.xi2), l.f2, ld(d.xi3), l.f3));
+  const V pl = add(add(sum2(ld(d.sl2), s.f2, ld(d.sl3), s.f3), mul(ld(d.sl4), s.sinzf)),
+                   add(sum2(ld(d.xl2), l.f2, ld(d.xl3), l.f3), mul(ld(d.xl4), l.sinzf)));
+  const V pgh = add(add(sum2(ld(d.sgh2), s.f2, ld(d.sgh3), s.f3), mul(ld(d.sgh4), s.sinzf)),
+                    add(sum2(ld(d.xgh2), l.f2, ld(d.xgh3), l.f3), mul(ld(d.xgh4), l.sinzf)));
+  const V ph = add(sum2(ld(d.sh2), s.f2, ld(d.sh3), s.f3), sum2(ld(d.xh2), l.f2, ld(d.xh3), l.f3));
+  Perturbed q;
+  const V inclp = add(ld(d.inclp), pinc);
+  q.ep = add(ld(d.ep), pe);
+  const V sinip = sin_x4(inclp), cosip = cos_x4(inclp);
+  const V nodep0 = ld(d.nodep), argpp0 = ld(d.argpp), mp0 = ld(d.mp);
+  // Inclination >= 0.2 rad.
+  const V ph_hi = dvd(ph, sinip);
+  const V argpp_hi = add(argpp0, sub(pgh, mul(cosip, ph_hi)));
+  const V nodep_hi = add(nodep0, ph_hi);
+  // Lyddane's modification below it.
+  const V sinop = sin_x4(nodep0), cosop = cos_x4(nodep0);
+  const V alfdp = add(mul(sinip, sinop), add(mul(ph, cosop), mul(mul(pinc, cosip), sinop)));
+  const V betdp = add(mul(sinip, cosop), add(mul(_mm256_xor_pd(ph, splat(-0.0)), sinop),
+                                             mul(mul(pinc, cosip), cosop)));
+  const V afspc = gt(ld(d.afspc), splat(0.5));  // all-ones bits (vand keeps what it selects)
+  V node = mod_two_pi(nodep0);
+  node = add(node, vand(vand(afspc, lt(node, splat(0.0))), splat(kTwoPi)));
+  const V xls = add(add(add(add(mp0, argpp0), pl), pgh), mul(sub(cosip, mul(pinc, sinip)), node));
+  V nodel = atan2_x4(alfdp, betdp);
+  nodel = add(nodel, vand(vand(afspc, lt(nodel, splat(0.0))), splat(kTwoPi)));
+  const V wrap = gt(vabs(sub(node, nodel)), splat(kPi));
+  nodel = add(nodel, vand(wrap, pick(lt(nodel, node), splat(kTwoPi), splat(-kTwoPi))));
+  q.mp = add(mp0, pl);
+  const V argpp_lo = sub(sub(xls, q.mp), mul(cosip, nodel));
+  const V hi = ge(inclp, splat(0.2));
+  V incl = inclp;
+  q.nodep = pick(hi, nodep_hi, nodel);
+  q.argpp = pick(hi, argpp_hi, argpp_lo);
+  // A negative inclination: turned, the node and perigee moved by pi (propagate_min).
+  const V neg = lt(incl, splat(0.0));
+  incl = pick(neg, _mm256_xor_pd(incl, splat(-0.0)), incl);
+  q.nodep = pick(neg, add(q.nodep, splat(kPi)), q.nodep);
+  q.argpp = pick(neg, sub(q.argpp, splat(kPi)), q.argpp);
+  _mm256_storeu_pd(o->bad, vor(ld(d.bad), vor(lt(q.ep, splat(0.0)), gt(q.ep, splat(1.0)))));
+  _mm256_storeu_pd(o->ep, q.ep);
+  _mm256_storeu_pd(o->nodep, q.nodep);
+  _mm256_storeu_pd(o->argpp, q.argpp);
+  _mm256_storeu_pd(o->mp, q.mp);
+  _mm256_storeu_pd(o->sinip, sin_x4(incl));
+  _mm256_storeu_pd(o->cosip, cos_x4(incl));
+}
+
+// position_velocity_x4 of the deep-space lanes (L: their perturbed inclination's coefficients).
+__attribute__((target("avx2,fma"))) void deep_lanes(const Lanes& L, const DeepIn& d, const DeepOut& e,
+                                                Out* o) noexcept {
+  Perturbed q;
+  q.am = ld(d.am);
+  q.nm = ld(d.nm);
+  q.ep = ld(e.ep);
+  q.nodep = ld(e.nodep);
+  q.argpp = ld(e.argpp);
+  q.mp = ld(e.mp);
+  position_velocity_x4(L, q, ld(e.bad), o);
 }
 
 bool avx2_present() noexcept {
@@ -326,7 +437,76 @@ void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min
     return;
   }
 #endif
-  propagate_near_scalar(p, tsince_min, r_teme_m, v_teme_mps, ok);
+  propagate_scalar(p, tsince_min, r_teme_m, v_teme_mps, ok);
+}
+
+// The deep-space lanes (sgp4.hpp): mean_min lane by lane (secular gravity and drag, deep-space
+// secular and resonance terms), the lunar-solar periodics four at a time (periodics_x4), the
+// coefficients short_period makes of the perturbed inclination lane by lane, then
+// position_velocity_x4. A lane that mean_min fails gets harmless elements and is flagged;
+// propagate_min then reports its error.
+void propagate_deep_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                       double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept {
+#ifdef EVADE_SGP4_X4
+  if (sgp4_x4_vectorized()) {
+    // Lane k of d: mean_min's elements of p at t (harmless ones and the bad mask if it fails) and
+    // p's lunar-solar coefficients and mode.
+    const auto load_deep_lane = [](const Sgp4Propagator& p, double t_min, int k, DeepIn* d) {
+      PerturbedElements e;
+      double am = 0.0, nm = 0.0;
+      const bool good = p.mean_min(t_min, e, am, nm) == Sgp4Error::kNone;
+      if (!good) e = PerturbedElements{0.1, 0.5, 0.0, 0.0, 0.0};
+      d->am[k] = good ? am : 2.0;
+      d->nm[k] = good ? nm : p.k_.xke_per_min / (2.0 * std::sqrt(2.0));
+      d->ep[k] = e.ep;
+      d->inclp[k] = e.inclp;
+      d->nodep[k] = e.nodep;
+      d->argpp[k] = e.argpp;
+      d->mp[k] = e.mp;
+      d->bad[k] = good ? 0.0 : -std::nan("");  // any all-ones-sign pattern: a mask lane
+      d->afspc[k] = p.mode_ == OperationMode::kAfspc ? 1.0 : 0.0;
+      const LunarSolarPeriodics& c = p.ds_.periodics;
+      const double* from[] = {&c.e3, &c.ee2, &c.se2, &c.se3, &c.sgh2, &c.sgh3, &c.sgh4, &c.sh2,
+                              &c.sh3, &c.si2, &c.si3, &c.sl2, &c.sl3, &c.sl4, &c.xgh2, &c.xgh3,
+                              &c.xgh4, &c.xh2, &c.xh3, &c.xi2, &c.xi3, &c.xl2, &c.xl3, &c.xl4,
+                              &c.zmol, &c.zmos};
+      double* to[] = {d->e3, d->ee2, d->se2, d->se3, d->sgh2, d->sgh3, d->sgh4, d->sh2,
+                      d->sh3, d->si2, d->si3, d->sl2, d->sl3, d->sl4, d->xgh2, d->xgh3,
+                      d->xgh4, d->xh2, d->xh3, d->xi2, d->xi3, d->xl2, d->xl3, d->xl4,
+                      d->zmol, d->zmos};
+      for (std::size_t m = 0; m < sizeof(from) / sizeof(from[0]); ++m) to[m][k] = *from[m];
+    };
+    DeepIn d;
+    for (int k = 0; k < 4; ++k) load_deep_lane(*p[k], tsince_min[k], k, &d);
+    DeepOut e;
+    periodics_x4(d, tsince_min, &e);
+    Lanes L;
+    for (int k = 0; k < 4; ++k) {
+      const Sgp4Propagator::Short c = p[k]->short_period(e.sinip[k], e.cosip[k]);
+      L.sinip[k] = e.sinip[k];
+      L.cosip[k] = e.cosip[k];
+      L.con41[k] = c.con41;
+      L.x1mth2[k] = c.x1mth2;
+      L.x7thm1[k] = c.x7thm1;
+      L.aycof[k] = c.aycof;
+      L.xlcof[k] = c.xlcof;
+      L.xke[k] = p[k]->k_.xke_per_min;
+      L.j2[k] = p[k]->k_.j2;
+      L.radius_km[k] = p[k]->k_.radius_km;
+    }
+    Out o;
+    deep_lanes(L, d, e, &o);
+    for (int k = 0; k < 4; ++k) {
+      ok[k] = o.bad[k] == 0.0;
+      for (int a = 0; a < 3; ++a) {
+        r_teme_m[k][a] = o.r[a][k];
+        v_teme_mps[k][a] = o.v[a][k];
+      }
+    }
+    return;
+  }
+#endif
+  propagate_scalar(p, tsince_min, r_teme_m, v_teme_mps, ok);
 }
 
 }  // namespace evade::sgp4

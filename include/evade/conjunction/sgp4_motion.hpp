@@ -129,15 +129,18 @@ class Sgp4Motion : public MotionSource {
   /// One SGP4 evaluation with SGP4's own velocity (state_at takes three: the central
   /// difference). Throws as state_at.
   StateEci grid_state_at(std::size_t i, double t_s) const override;
-  /// grid_state_at of each object, the near-Earth ones four at a time where the processor
-  /// has AVX2 (sgp4::propagate_near_x4; a lane it flags is computed by grid_state_at).
+  /// grid_state_at of each object, four near-Earth or four deep-space ones at a time where
+  /// the processor has AVX2 (sgp4::propagate_near_x4, sgp4::propagate_deep_x4; a lane they
+  /// flag is computed by grid_state_at).
   void grid_states_at(double t_s, std::size_t begin, std::size_t end, StateEci* out) const override;
   /// velocity_allowance_mps of the escape speed at the Earth's radius, sqrt(2 mu / Re) =
   /// 11.2 km/s (no accepted object is faster: every perigee is above Re): 12.2 m/s; plus
   /// 1e-6 m/s for the four-lane states (sgp4_x4_test.cpp measures below 1e-9 m/s).
   double grid_velocity_error_mps(std::size_t i) const override;
-  /// sgp4::kSgp4X4PositionError_m (1 mm) for an object whose grid states are computed four
-  /// at a time, else 0.
+  /// sgp4::kSgp4X4PositionError_m (1 mm) for a near-Earth object whose grid states are
+  /// computed four at a time; for a deep-space one the larger of that and
+  /// 10 kSgp4X4DeepPositionErrorRel r_max (r_max its largest radius as velocity_error_mps takes
+  /// it: 1 mm for every orbit inside 1e8 m); else 0.
   double grid_position_error_m(std::size_t i) const override;
   bool has_grid_states() const override { return true; }
   EarthModel reference_earth() const override;
@@ -150,9 +153,11 @@ class Sgp4Motion : public MotionSource {
  private:
   friend struct Sgp4CatalogBuilder;
   bool four_lane(std::size_t i) const { return four_lane_[i] != 0; }
+  bool deep_lane(std::size_t i) const { return four_lane_[i] == 2; }
   std::vector<sgp4::Sgp4Propagator> props_;
   std::vector<double> offset_s_;  // start - element epoch [s]
-  std::vector<char> four_lane_;   // grid states four at a time (propagate_near_x4)
+  std::vector<char> four_lane_;   // grid states four at a time: 1 propagate_near_x4, 2 _deep_x4
+  std::vector<double> grid_err_m_;  // grid_position_error_m of each object
   std::vector<long> norad_;
   std::vector<std::string> names_;
   std::vector<PerturbationBound> bounds_;

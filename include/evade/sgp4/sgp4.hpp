@@ -77,12 +77,28 @@ bool sgp4_x4_vectorized() noexcept;
 void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
                        double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept;
 
-/// Bound on |r_x4 - r| / |r| between propagate_near_x4 and propagate_min positions
+/// The same for four deep-space propagators p[k] (deep_space() true, init_error() kNone):
+/// the secular and resonance terms lane by lane as propagate_min computes them
+/// (deep_space.cpp), then the lunar-solar periodics four at a time (deep_space_periodics'
+/// formulas), the perturbed inclination's sine and cosine, the long- and short-period terms, Kepler's equation and the orientation four at a time (the formulas of
+/// propagate_near_x4, with the perturbed inclination's coefficients as propagate_min takes
+/// them). Within kSgp4X4DeepPositionErrorRel |r| of propagate_min's (sgp4_x4_test.cpp checks
+/// it on the shipped catalog's deep-space element sets); ok[k] as for propagate_near_x4.
+/// Thread-safe.
+void propagate_deep_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                       double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept;
+
+/// Bound on |r_x4 - r| / |r| between propagate_near_x4 (or propagate_deep_x4) and propagate_min positions
 /// (docs/VALIDATION.md: about 100 times the largest measured, 1.03e-15 on the shipped
 /// catalog; a fortieth of the 4e-12 |r| jumps SGP4's own positions are allowed).
 constexpr double kSgp4X4PositionErrorRel = 1e-13;
+/// The same bound for propagate_deep_x4 (about 70 times the largest measured, 1.47e-14 on
+/// the shipped catalog's deep-space element sets: their eccentric orbits and the vector
+/// arctangent of Lyddane's node; a quarter of the 4e-12 |r| jumps).
+constexpr double kSgp4X4DeepPositionErrorRel = 1e-12;
 /// The same as a distance [m]: 1 mm, far above kSgp4X4PositionErrorRel |r| for every
-/// near-Earth orbit (period < 225 min, so |r| < 2 a < 2.4e7 m: 2.4e-6 m).
+/// near-Earth orbit (period < 225 min, so |r| < 2 a < 2.4e7 m: 2.4e-6 m); a deep-space orbit
+/// takes the larger of this and 10 kSgp4X4DeepPositionErrorRel r_max (conjunction::Sgp4Motion).
 constexpr double kSgp4X4PositionError_m = 1e-3;
 
 class Sgp4Propagator {
@@ -111,6 +127,9 @@ class Sgp4Propagator {
   friend void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
                                 double r_teme_m[4][3], double v_teme_mps[4][3],
                                 bool ok[4]) noexcept;
+  friend void propagate_deep_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                                double r_teme_m[4][3], double v_teme_mps[4][3],
+                                bool ok[4]) noexcept;
   struct Short {
     double con41, x1mth2, x7thm1, aycof, xlcof;
   };
@@ -118,6 +137,12 @@ class Sgp4Propagator {
                        double sinio, double rp);
   void init_drag_higher_order(double ao, double tsi, double sfour);
   Short short_period(double sinip, double cosip) const noexcept;
+  // propagate_min up to the perturbed elements (secular gravity and drag, deep space's
+  // secular, resonance and lunar-solar terms), the mean semi-major axis am [Earth radii] and
+  // mean motion nm [rad/min]; an error code where propagate_min reports one there.
+  Sgp4Error perturbed_min(double t, PerturbedElements& p, double& am, double& nm) const noexcept;
+  // perturbed_min without the lunar-solar periodics (the elements dpper starts from).
+  Sgp4Error mean_min(double t, PerturbedElements& p, double& am, double& nm) const noexcept;
   Sgp4State position_velocity(const PerturbedElements& p, double am, double nm) const noexcept;
 
   GravityConstants k_;
