@@ -339,9 +339,13 @@ std::vector<ResonanceCheckpoint> resonance_checkpoints(const Resonance& r,
   std::vector<ResonanceCheckpoint> c;
   c.reserve(n + 1);
   c.push_back(ResonanceCheckpoint{0.0, r.xlamo, ep.no_unkozai});
-  for (std::size_t k = 0; k < n; ++k) {
-    const ResonanceCheckpoint& s = c.back();
-    c.push_back(resonance_step(s, resonance_rates(r, ep, s.xli, s.xni, s.atime), kStep));
+  for (std::size_t k = 0; k <= n; ++k) {
+    ResonanceCheckpoint& s = c.back();
+    const ResonanceRates rates = resonance_rates(r, ep, s.xli, s.xni, s.atime);
+    s.xndt = rates.xndt;
+    s.xldot = rates.xldot;
+    s.xnddt = rates.xnddt;
+    if (k < n) c.push_back(resonance_step(s, rates, kStep));
   }
   return c;
 }
@@ -385,20 +389,30 @@ void deep_space_secular(const DeepSpaceTerms& ds, const DeepSpaceEpoch& ep, doub
   double ft = 0.0;
   const double delt = t > 0.0 ? kStep : -kStep;
   // The loop below passes step j without stopping while t - 720 j >= 720: start from the
-  // checkpoint floor(t / 720) - 1 (at most the last one), which is the loop's own state there.
-  const double passed = std::floor(t / kStep) - 1.0;
-  if (t > 0.0 && passed >= 1.0 && !ds.checkpoints.empty()) {
+  // checkpoint floor(t / 720) - 1 (at least the first, at most the last one), which is the
+  // loop's own state there; from a checkpoint, the loop's next state is the next checkpoint
+  // and the rates are the ones stored with it (resonance_checkpoints computed both the same way).
+  const std::size_t kNone = ds.checkpoints.size();
+  std::size_t at = kNone;  // s is checkpoint `at`, or no checkpoint
+  if (t > 0.0 && !ds.checkpoints.empty()) {
     const double last = static_cast<double>(ds.checkpoints.size() - 1);
-    s = ds.checkpoints[static_cast<std::size_t>(std::min(passed, last))];
+    at = static_cast<std::size_t>(std::clamp(std::floor(t / kStep) - 1.0, 0.0, last));
+    s = ds.checkpoints[at];
   }
   ResonanceRates k{};
   for (;;) {  // at most 2 steps after a checkpoint within the horizon
-    k = resonance_rates(r, ep, s.xli, s.xni, s.atime);
+    k = at != kNone ? ResonanceRates{s.xndt, s.xldot, s.xnddt}
+                    : resonance_rates(r, ep, s.xli, s.xni, s.atime);
     if (std::fabs(t - s.atime) < kStep) {
       ft = t - s.atime;
       break;
     }
-    s = resonance_step(s, k, delt);
+    if (at != kNone && at + 1 < ds.checkpoints.size()) {
+      s = ds.checkpoints[++at];
+    } else {
+      at = kNone;
+      s = resonance_step(s, k, delt);
+    }
   }
   const double nm = s.xni + k.xndt * ft + k.xnddt * ft * ft * 0.5;
   const double xl = s.xli + k.xldot * ft + k.xndt * ft * ft * 0.5;

@@ -315,7 +315,9 @@ Sgp4Error Sgp4Propagator::mean_min(double t, PerturbedElements& p, double& am,
   m.inclm = el_.inclo_rad;
   if (deep_) deep_space_secular(ds_, ep_, t, m);
   if (m.nm <= 0.0) return Sgp4Error::kMeanMotion;
-  am = (deep_ ? std::pow(k_.xke_per_min / m.nm, kX2o3) : am_near_) * tempa * tempa;
+  // Without a resonance the mean motion stays no_unkozai_, whose am_near_ is the same power.
+  const bool resonant = deep_ && ds_.resonance.irez != 0;
+  am = (resonant ? std::pow(k_.xke_per_min / m.nm, kX2o3) : am_near_) * tempa * tempa;
   nm = k_.xke_per_min / (am * std::sqrt(am));  // am^1.5
   double em = m.em - tempe;
   if (em >= 1.0 || em < -0.001) return Sgp4Error::kMeanEccentricity;

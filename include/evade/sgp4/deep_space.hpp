@@ -35,11 +35,13 @@ struct Resonance {
   double xfact = 0, xlamo = 0;
 };
 
-/// The resonance integrator's state after a whole number of 720 min steps from the epoch.
+/// The resonance integrator's state after a whole number of 720 min steps from the epoch,
+/// and (in DeepSpaceTerms::checkpoints) the loop's rates there, as it computes them.
 struct ResonanceCheckpoint {
   double atime = 0;  ///< min from epoch
   double xli = 0;
   double xni = 0;
+  double xndt = 0, xldot = 0, xnddt = 0;  ///< the resonance rates at this state
 };
 
 struct DeepSpaceTerms {
