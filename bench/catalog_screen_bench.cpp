@@ -8,9 +8,9 @@
 //   BM_Sgp4State         : one SGP4 state (position and SGP4's velocity) of every object of
 //                          the catalog at 100 instants over a day; arg 0: the near-Earth
 //                          objects (SGP4), 1: the deep-space ones (SDP4). Time per state.
-//   BM_Sgp4StateX4       : the states of BM_Sgp4State(arg), four at a time
-//                          (propagate_near_x4, propagate_deep_x4; AVX2 where the processor
-//                          has it).
+//   BM_Sgp4StateX4       : the states of BM_Sgp4State(arg), four at a time as the screening
+//                          computes them (sgp4::Sgp4X4Lanes gathered once per group, then
+//                          sgp4::propagate_x4; AVX2 where the processor has it).
 // Run from the repository root (the catalog path is relative to it; EVADE_CATALOG overrides):
 //   build/bench/catalog_screen_bench --benchmark_filter=Sgp4Catalog
 // Results and machine: docs/PERFORMANCE.md.
@@ -84,18 +84,24 @@ void BM_Sgp4State(benchmark::State& state) {
 }
 BENCHMARK(BM_Sgp4State)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-// The states of BM_Sgp4State(arg), four objects at a time (propagate_near_x4, propagate_deep_x4).
+// The states of BM_Sgp4State(arg), four objects at a time as the screening computes them:
+// each group's constants gathered once (sgp4::Sgp4X4Lanes), then sgp4::propagate_x4 at every
+// instant (propagate_near_x4, propagate_deep_x4 gather them at every call).
 void BM_Sgp4StateX4(benchmark::State& state) {
   sgp4::Catalog cat;
   if (!read_catalog(state, cat)) return;
   const bool deep = state.range(0) == 1;
-  const auto x4 = deep ? sgp4::propagate_deep_x4 : sgp4::propagate_near_x4;
   std::vector<sgp4::Sgp4Propagator> props;
   for (const auto& m : cat.objects) {
     sgp4::Sgp4Propagator p(m);
     if (p.init_error() == sgp4::Sgp4Error::kNone && p.deep_space() == deep) props.push_back(p);
   }
   const std::size_t n4 = props.size() / 4 * 4;
+  std::vector<sgp4::Sgp4X4Lanes> lanes;
+  for (std::size_t g = 0; g < n4; g += 4) {
+    const sgp4::Sgp4Propagator* p[4] = {&props[g], &props[g + 1], &props[g + 2], &props[g + 3]};
+    lanes.emplace_back(p);
+  }
   long states = 0;
   for (auto _ : state) {
     for (int k = 0; k < 100; ++k) {
@@ -105,7 +111,7 @@ void BM_Sgp4StateX4(benchmark::State& state) {
         const sgp4::Sgp4Propagator* p[4] = {&props[g], &props[g + 1], &props[g + 2], &props[g + 3]};
         double r[4][3], v[4][3];
         bool ok[4];
-        x4(p, tk, r, v, ok);
+        sgp4::propagate_x4(lanes[g / 4], p, tk, r, v, ok);
         benchmark::DoNotOptimize(r);
       }
     }

@@ -78,12 +78,12 @@ struct Envelope {
 void envelope_positions(const sgp4::Sgp4Propagator& p, double offset_s, const double* t_s,
                         std::size_t n, Vec3* r, char* ok) {
   const sgp4::Sgp4Propagator* lanes[4] = {&p, &p, &p, &p};
-  const auto x4 = p.deep_space() ? sgp4::propagate_deep_x4 : sgp4::propagate_near_x4;
+  const sgp4::Sgp4X4Lanes prepared(lanes);  // the constants gathered once
   for (std::size_t b = 0; b < n; b += 4) {
     double tsince_min[4], rk[4][3], vk[4][3];
     bool okk[4];
     for (std::size_t k = 0; k < 4; ++k) tsince_min[k] = (offset_s + t_s[std::min(b + k, n - 1)]) / 60.0;
-    x4(lanes, tsince_min, rk, vk, okk);
+    sgp4::propagate_x4(prepared, lanes, tsince_min, rk, vk, okk);
     for (std::size_t k = 0; k < 4 && b + k < n; ++k) {
       r[b + k] = Vec3(rk[k][0], rk[k][1], rk[k][2]);
       ok[b + k] = okk[k] ? 1 : 0;
@@ -251,6 +251,70 @@ StateEci Sgp4Motion::grid_state_at(std::size_t i, double t_s) const {
 }
 
 void Sgp4Motion::grid_states_at(double t_s, std::size_t begin, std::size_t end,
+                                StateEci* out) const {
+  const std::size_t windows = window_first_group_.empty() ? 0 : window_first_group_.size() - 1;
+  for (std::size_t i = begin; i < end;) {
+    const std::size_t w = i / kLaneWindow, w0 = w * kLaneWindow;
+    const std::size_t w1 = std::min(size(), w0 + kLaneWindow);
+    if (i == w0 && w1 <= end && w < windows) {  // a whole window: its prepared groups
+      window_states(w, t_s, out);
+      i = w1;
+    } else {
+      const std::size_t j = std::min(end, w1);
+      grouped_states(t_s, i, j, out);
+      i = j;
+    }
+  }
+}
+
+void Sgp4Motion::window_states(std::size_t w, double t_s, StateEci* out) const {
+  const std::size_t w0 = w * kLaneWindow, w1 = std::min(size(), w0 + kLaneWindow);
+  for (std::size_t i = w0; i < w1; ++i)
+    if (!four_lane(i)) out[i] = grid_state_at(i, t_s);
+  for (std::size_t g = window_first_group_[w]; g < window_first_group_[w + 1]; ++g) {
+    const LaneGroup& lg = groups_[g];
+    const sgp4::Sgp4Propagator* p[4];
+    double tsince_min[4], r[4][3], v[4][3];
+    bool ok[4];
+    for (std::size_t k = 0; k < 4; ++k) {
+      p[k] = &props_[lg.obj[k]];
+      tsince_min[k] = (offset_s_[lg.obj[k]] + t_s) / 60.0;  // as propagate_s
+    }
+    sgp4::propagate_x4(group_lanes_[g], p, tsince_min, r, v, ok);
+    for (std::size_t k = 0; k < lg.n; ++k) {
+      const std::size_t i = lg.obj[k];
+      out[i] = ok[k] ? StateEci{Vec3(r[k][0], r[k][1], r[k][2]), Vec3(v[k][0], v[k][1], v[k][2])}
+                     : grid_state_at(i, t_s);  // an error: named by state_at
+    }
+  }
+}
+
+void Sgp4Motion::build_lane_groups() {
+  groups_.clear();
+  group_lanes_.clear();
+  window_first_group_.assign(1, 0);
+  for (std::size_t w0 = 0; w0 < size(); w0 += kLaneWindow) {
+    const std::size_t w1 = std::min(size(), w0 + kLaneWindow);
+    for (const char kind : {char{1}, char{2}}) {  // near-Earth, then deep-space groups
+      LaneGroup lg{};
+      for (std::size_t i = w0; i <= w1; ++i) {
+        if (i < w1 && four_lane_[i] != kind) continue;
+        if (i < w1) lg.obj[lg.n++] = static_cast<std::uint32_t>(i);
+        if (lg.n == 4 || (i == w1 && lg.n > 0)) {
+          for (std::size_t k = lg.n; k < 4; ++k) lg.obj[k] = lg.obj[lg.n - 1];  // repeats the last
+          const sgp4::Sgp4Propagator* p[4];
+          for (std::size_t k = 0; k < 4; ++k) p[k] = &props_[lg.obj[k]];
+          groups_.push_back(lg);
+          group_lanes_.emplace_back(p);
+          lg = LaneGroup{};
+        }
+      }
+    }
+    window_first_group_.push_back(groups_.size());
+  }
+}
+
+void Sgp4Motion::grouped_states(double t_s, std::size_t begin, std::size_t end,
                                 StateEci* out) const {
   std::size_t lanes[2][4];  // near-Earth, deep-space objects waiting for a group of four
   int count[2] = {0, 0};
@@ -469,6 +533,7 @@ Sgp4Screening Sgp4CatalogBuilder::build(const std::vector<sgp4::MeanElements>& e
     out.norad_ids.push_back(m.norad_id);
     out.element_index.push_back(k);
   }
+  motion->build_lane_groups();
   out.motion = std::move(motion);
   return out;
 }

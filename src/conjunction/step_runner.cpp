@@ -103,7 +103,7 @@ void StepRunner::run(long k_begin, long k_end, ScreenResult& res) {
 
 void StepRunner::advance(long k_from, long k_to, long k_row0) {
   if (k_from > k_to) return;
-  constexpr std::size_t kChunk = 64;
+  constexpr std::size_t kChunk = 64;  // objects (Sgp4Motion's lane groups come in windows of 64)
   const std::size_t n = objects_.size();
   std::atomic<std::size_t> next{0};
   run_parallel(nthreads_, [&](int) {

@@ -22,6 +22,8 @@
 #include "evade/sgp4/sgp4.hpp"
 
 #include <cmath>
+#include <cstddef>
+#include <new>
 
 #if defined(__x86_64__) && defined(EVADE_HAVE_LIBMVEC)
 #include <immintrin.h>
@@ -102,15 +104,39 @@ EVADE_AVX2 SC rotate(SC a, V d) {
   return {add(mul(a.s, cd), mul(a.c, sd)), sub(mul(a.c, cd), mul(a.s, sd))};
 }
 
-// The per-lane constants of Sgp4Propagator the near-Earth formulas read, lane k in [k].
+// The inclination's sine and cosine and the short-period coefficients of each lane (the
+// epoch inclination's for near-Earth lanes, the perturbed one's for deep-space lanes).
+struct ShortLanes {
+  double sinip[4], cosip[4], con41[4], x1mth2[4], x7thm1[4], aycof[4], xlcof[4];
+};
+
+// The per-lane constants of Sgp4Propagator the near-Earth formulas read, lane k in [k]
+// (deep-space lanes: xke, j2 and radius_km only).
 struct Lanes {
   double mo[4], mdot[4], argpo[4], argpdot[4], nodeo[4], nodedot[4], nodecf[4];
   double cc1[4], bstar_cc4[4], bstar_cc5[4], t2cof[4], t3cof[4], t4cof[4], t5cof[4];
   double omgcof[4], eta[4], xmcof[4], delmo[4], d2[4], d3[4], d4[4], sinmao[4];
   double simp[4];  // all-ones bits where isimp (no higher-order drag terms), else 0
   double no_unkozai[4], ecco[4], am_near[4], xke[4], j2[4], radius_km[4];
-  double sinip[4], cosip[4], con41[4], x1mth2[4], x7thm1[4], aycof[4], xlcof[4];
+  ShortLanes s;
 };
+
+// The lunar-solar coefficients of deep-space lanes (deep_space.hpp's LunarSolarPeriodics)
+// and their operation mode.
+struct DeepCoef {
+  double e3[4], ee2[4], se2[4], se3[4], sgh2[4], sgh3[4], sgh4[4], sh2[4], sh3[4];
+  double si2[4], si3[4], sl2[4], sl3[4], sl4[4], xgh2[4], xgh3[4], xgh4[4], xh2[4], xh3[4];
+  double xi2[4], xi3[4], xl2[4], xl3[4], xl4[4], zmol[4], zmos[4];
+  double afspc[4];  // 1 where the mode is kAfspc, else 0
+};
+
+// What Sgp4X4Lanes holds (sgp4.hpp): the constants of four lanes, gathered once.
+struct Prepared {
+  Lanes L;
+  DeepCoef D;
+};
+static_assert(sizeof(Prepared) <= kSgp4X4LanesBytes, "Sgp4X4Lanes's storage is too small");
+static_assert(alignof(Prepared) <= 32, "Sgp4X4Lanes's storage is aligned to 32 bytes");
 
 struct Out {
   double r[3][4], v[3][4];
@@ -194,13 +220,13 @@ __attribute__((target("avx2,fma"))) SC kepler_x4(V u, V axnl, V aynl) noexcept {
 }
 
 // position_velocity of sgp4.cpp (near-Earth: the epoch inclination's coefficients).
-__attribute__((target("avx2,fma"), always_inline)) inline void position_velocity_x4(const Lanes& L, const Perturbed& q,
-                                                          V bad, Out* o) noexcept {
+__attribute__((target("avx2,fma"), always_inline)) inline void position_velocity_x4(
+    const Lanes& L, const ShortLanes& S, const Perturbed& q, V bad, Out* o) noexcept {
   const V ep = q.ep, am = q.am;
   const V axnl = mul(ep, cos_x4(q.argpp));
   V temp = dvd(splat(1.0), mul(am, sub(splat(1.0), mul(ep, ep))));
-  const V aynl = add(mul(ep, sin_x4(q.argpp)), mul(temp, ld(L.aycof)));
-  const V xl = add(add(add(q.mp, q.argpp), q.nodep), mul(mul(temp, ld(L.xlcof)), axnl));
+  const V aynl = add(mul(ep, sin_x4(q.argpp)), mul(temp, ld(S.aycof)));
+  const V xl = add(add(add(q.mp, q.argpp), q.nodep), mul(mul(temp, ld(S.xlcof)), axnl));
   const SC ks = kepler_x4(mod_two_pi(sub(xl, q.nodep)), axnl, aynl);
   const V ecose = add(mul(axnl, ks.c), mul(aynl, ks.s));
   const V esine = sub(mul(axnl, ks.s), mul(aynl, ks.c));
@@ -220,10 +246,10 @@ __attribute__((target("avx2,fma"), always_inline)) inline void position_velocity
   temp = dvd(splat(1.0), pl);
   const V temp1 = mul(mul(splat(0.5), ld(L.j2)), temp);
   const V temp2 = mul(temp1, temp);
-  const V con41 = ld(L.con41), x1mth2 = ld(L.x1mth2), sinip = ld(L.sinip), cosip = ld(L.cosip);
+  const V con41 = ld(S.con41), x1mth2 = ld(S.x1mth2), sinip = ld(S.sinip), cosip = ld(S.cosip);
   const V mrt = add(mul(rl, sub(splat(1.0), mul(mul(mul(splat(1.5), temp2), betal), con41))),
                     mul(mul(mul(splat(0.5), temp1), x1mth2), cos2u));
-  const V dsu = mul(mul(mul(splat(-0.25), temp2), ld(L.x7thm1)), sin2u);
+  const V dsu = mul(mul(mul(splat(-0.25), temp2), ld(S.x7thm1)), sin2u);
   const V norm = vsqrt(add(mul(sinu, sinu), mul(cosu, cosu)));
   const SC su = rotate({dvd(sinu, norm), dvd(cosu, norm)}, dsu);
   const V dinc = mul(mul(mul(mul(splat(1.5), temp2), cosip), sinip), cos2u);
@@ -253,19 +279,14 @@ __attribute__((target("avx2,fma"))) void propagate_lanes(const Lanes& L, const d
                                                      Out* o) noexcept {
   V bad;
   const Perturbed q = secular_x4(L, _mm256_loadu_pd(tsince_min), &bad);
-  position_velocity_x4(L, q, bad, o);
+  position_velocity_x4(L, L.s, q, bad, o);
 }
 
-// Deep-space lanes: the elements dpper starts from, the semi-major axis and mean motion of each
-// lane from Sgp4Propagator::mean_min, the lunar-solar coefficients (deep_space.hpp's
-// LunarSolarPeriodics) and the operation mode; bad all-ones bits where mean_min reported an
-// error.
+// Deep-space lanes at one instant: the elements dpper starts from, the semi-major axis and
+// mean motion of each lane from Sgp4Propagator::mean_min; bad all-ones bits where mean_min
+// reported an error.
 struct DeepIn {
   double am[4], nm[4], ep[4], inclp[4], nodep[4], argpp[4], mp[4], bad[4];
-  double e3[4], ee2[4], se2[4], se3[4], sgh2[4], sgh3[4], sgh4[4], sh2[4], sh3[4];
-  double si2[4], si3[4], sl2[4], sl3[4], sl4[4], xgh2[4], xgh3[4], xgh4[4], xh2[4], xh3[4];
-  double xi2[4], xi3[4], xl2[4], xl3[4], xl4[4], zmol[4], zmos[4];
-  double afspc[4];  // 1 where the mode is kAfspc, else 0
 };
 
 // c2 f2 + c3 f3.
@@ -295,19 +316,19 @@ struct DeepOut {
 // both of its branches (inclination >= 0.2 rad, else Lyddane's) computed and the lane's one
 // kept, then propagate_min's negative-inclination turn and eccentricity check (bad where the
 // eccentricity leaves [0, 1]).
-__attribute__((target("avx2,fma"))) void periodics_x4(const DeepIn& d, const double t_min[4],
-                                                  DeepOut* o) noexcept {
+__attribute__((target("avx2,fma"))) void periodics_x4(const DeepCoef& c, const DeepIn& d,
+                                                  const double t_min[4], DeepOut* o) noexcept {
   const V t = ld(t_min);
   constexpr double kPi = 3.14159265358979323846, kTwoPi = 2.0 * kPi;  // deep_space.cpp's
-  const BodyTerms s = body_terms(ld(d.zmos), 1.19459e-5, 0.01675, t);    // kZns, kZes
-  const BodyTerms l = body_terms(ld(d.zmol), 1.5835218e-4, 0.05490, t);  // kZnl, kZel
-  const V pe = add(sum2(ld(d.se2), s.f2, ld(d.se3), s.f3), sum2(ld(d.ee2), l.f2, ld(d.e3), l.f3));
-  const V pinc = add(sum2(ld(d.si2), s.f2, ld(d.si3), s.f3), sum2(ld(d.xi2), l.f2, ld(d.xi3), l.f3));
-  const V pl = add(add(sum2(ld(d.sl2), s.f2, ld(d.sl3), s.f3), mul(ld(d.sl4), s.sinzf)),
-                   add(sum2(ld(d.xl2), l.f2, ld(d.xl3), l.f3), mul(ld(d.xl4), l.sinzf)));
-  const V pgh = add(add(sum2(ld(d.sgh2), s.f2, ld(d.sgh3), s.f3), mul(ld(d.sgh4), s.sinzf)),
-                    add(sum2(ld(d.xgh2), l.f2, ld(d.xgh3), l.f3), mul(ld(d.xgh4), l.sinzf)));
-  const V ph = add(sum2(ld(d.sh2), s.f2, ld(d.sh3), s.f3), sum2(ld(d.xh2), l.f2, ld(d.xh3), l.f3));
+  const BodyTerms s = body_terms(ld(c.zmos), 1.19459e-5, 0.01675, t);    // kZns, kZes
+  const BodyTerms l = body_terms(ld(c.zmol), 1.5835218e-4, 0.05490, t);  // kZnl, kZel
+  const V pe = add(sum2(ld(c.se2), s.f2, ld(c.se3), s.f3), sum2(ld(c.ee2), l.f2, ld(c.e3), l.f3));
+  const V pinc = add(sum2(ld(c.si2), s.f2, ld(c.si3), s.f3), sum2(ld(c.xi2), l.f2, ld(c.xi3), l.f3));
+  const V pl = add(add(sum2(ld(c.sl2), s.f2, ld(c.sl3), s.f3), mul(ld(c.sl4), s.sinzf)),
+                   add(sum2(ld(c.xl2), l.f2, ld(c.xl3), l.f3), mul(ld(c.xl4), l.sinzf)));
+  const V pgh = add(add(sum2(ld(c.sgh2), s.f2, ld(c.sgh3), s.f3), mul(ld(c.sgh4), s.sinzf)),
+                    add(sum2(ld(c.xgh2), l.f2, ld(c.xgh3), l.f3), mul(ld(c.xgh4), l.sinzf)));
+  const V ph = add(sum2(ld(c.sh2), s.f2, ld(c.sh3), s.f3), sum2(ld(c.xh2), l.f2, ld(c.xh3), l.f3));
   Perturbed q;
   const V inclp = add(ld(d.inclp), pinc);
   q.ep = add(ld(d.ep), pe);
@@ -322,7 +343,7 @@ __attribute__((target("avx2,fma"))) void periodics_x4(const DeepIn& d, const dou
   const V alfdp = add(mul(sinip, sinop), add(mul(ph, cosop), mul(mul(pinc, cosip), sinop)));
   const V betdp = add(mul(sinip, cosop), add(mul(_mm256_xor_pd(ph, splat(-0.0)), sinop),
                                              mul(mul(pinc, cosip), cosop)));
-  const V afspc = gt(ld(d.afspc), splat(0.5));  // all-ones bits (vand keeps what it selects)
+  const V afspc = gt(ld(c.afspc), splat(0.5));  // all-ones bits (vand keeps what it selects)
   V node = mod_two_pi(nodep0);
   node = add(node, vand(vand(afspc, lt(node, splat(0.0))), splat(kTwoPi)));
   const V xls = add(add(add(add(mp0, argpp0), pl), pgh), mul(sub(cosip, mul(pinc, sinip)), node));
@@ -351,8 +372,8 @@ __attribute__((target("avx2,fma"))) void periodics_x4(const DeepIn& d, const dou
 }
 
 // position_velocity_x4 of the deep-space lanes (L: their perturbed inclination's coefficients).
-__attribute__((target("avx2,fma"))) void deep_lanes(const Lanes& L, const DeepIn& d, const DeepOut& e,
-                                                Out* o) noexcept {
+__attribute__((target("avx2,fma"))) void deep_lanes(const Lanes& L, const ShortLanes& S, const DeepIn& d,
+                                                const DeepOut& e, Out* o) noexcept {
   Perturbed q;
   q.am = ld(d.am);
   q.nm = ld(d.nm);
@@ -360,7 +381,7 @@ __attribute__((target("avx2,fma"))) void deep_lanes(const Lanes& L, const DeepIn
   q.nodep = ld(e.nodep);
   q.argpp = ld(e.argpp);
   q.mp = ld(e.mp);
-  position_velocity_x4(L, q, ld(e.bad), o);
+  position_velocity_x4(L, S, q, ld(e.bad), o);
 }
 
 bool avx2_present() noexcept {
@@ -381,52 +402,115 @@ bool sgp4_x4_vectorized() noexcept {
 #endif
 }
 
-void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
-                       double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept {
+Sgp4X4Lanes::Sgp4X4Lanes(const Sgp4Propagator* const p[4]) noexcept : deep_(p[0]->deep_space()) {
+#ifdef EVADE_SGP4_X4
+  auto* prepared = new (storage_) Prepared;  // trivially destructible: nothing to undo
+  Lanes& L = prepared->L;
+  DeepCoef& D = prepared->D;
+  for (int k = 0; k < 4; ++k) {
+    const Sgp4Propagator& s = *p[k];
+    L.xke[k] = s.k_.xke_per_min;
+    L.j2[k] = s.k_.j2;
+    L.radius_km[k] = s.k_.radius_km;
+    if (deep_) {
+      const LunarSolarPeriodics& c = s.ds_.periodics;
+      const double* from[] = {&c.e3,   &c.ee2,  &c.se2,  &c.se3,  &c.sgh2, &c.sgh3, &c.sgh4,
+                              &c.sh2,  &c.sh3,  &c.si2,  &c.si3,  &c.sl2,  &c.sl3,  &c.sl4,
+                              &c.xgh2, &c.xgh3, &c.xgh4, &c.xh2,  &c.xh3,  &c.xi2,  &c.xi3,
+                              &c.xl2,  &c.xl3,  &c.xl4,  &c.zmol, &c.zmos};
+      double* to[] = {D.e3,   D.ee2,  D.se2,  D.se3,  D.sgh2, D.sgh3, D.sgh4, D.sh2,  D.sh3,
+                      D.si2,  D.si3,  D.sl2,  D.sl3,  D.sl4,  D.xgh2, D.xgh3, D.xgh4, D.xh2,
+                      D.xh3,  D.xi2,  D.xi3,  D.xl2,  D.xl3,  D.xl4,  D.zmol, D.zmos};
+      for (std::size_t m = 0; m < sizeof(from) / sizeof(from[0]); ++m) to[m][k] = *from[m];
+      D.afspc[k] = s.mode_ == OperationMode::kAfspc ? 1.0 : 0.0;
+      continue;
+    }
+    L.mo[k] = s.el_.mo_rad;
+    L.mdot[k] = s.ep_.mdot;
+    L.argpo[k] = s.el_.argpo_rad;
+    L.argpdot[k] = s.ep_.argpdot;
+    L.nodeo[k] = s.el_.nodeo_rad;
+    L.nodedot[k] = s.ep_.nodedot;
+    L.nodecf[k] = s.nodecf_;
+    L.cc1[k] = s.cc1_;
+    L.bstar_cc4[k] = s.el_.bstar_per_er * s.cc4_;
+    L.bstar_cc5[k] = s.el_.bstar_per_er * s.cc5_;
+    L.t2cof[k] = s.t2cof_;
+    L.t3cof[k] = s.t3cof_;
+    L.t4cof[k] = s.t4cof_;
+    L.t5cof[k] = s.t5cof_;
+    L.omgcof[k] = s.omgcof_;
+    L.eta[k] = s.eta_;
+    L.xmcof[k] = s.xmcof_;
+    L.delmo[k] = s.delmo_;
+    L.d2[k] = s.d2_;
+    L.d3[k] = s.d3_;
+    L.d4[k] = s.d4_;
+    L.sinmao[k] = s.sinmao_;
+    L.simp[k] = s.isimp_ ? -std::nan("") : 0.0;  // any all-ones-sign pattern: blend mask
+    L.no_unkozai[k] = s.no_unkozai_;
+    L.ecco[k] = s.el_.ecco;
+    L.am_near[k] = s.am_near_;
+    L.s.sinip[k] = s.sin_inclo_;
+    L.s.cosip[k] = s.cos_inclo_;
+    L.s.con41[k] = s.near_.con41;
+    L.s.x1mth2[k] = s.near_.x1mth2;
+    L.s.x7thm1[k] = s.near_.x7thm1;
+    L.s.aycof[k] = s.near_.aycof;
+    L.s.xlcof[k] = s.near_.xlcof;
+  }
+#else
+  (void)storage_;
+#endif
+}
+
+void propagate_x4(const Sgp4X4Lanes& lanes, const Sgp4Propagator* const p[4],
+                  const double tsince_min[4], double r_teme_m[4][3], double v_teme_mps[4][3],
+                  bool ok[4]) noexcept {
 #ifdef EVADE_SGP4_X4
   if (sgp4_x4_vectorized()) {
-    Lanes L;
-    for (int k = 0; k < 4; ++k) {
-      const Sgp4Propagator& s = *p[k];
-      L.mo[k] = s.el_.mo_rad;
-      L.mdot[k] = s.ep_.mdot;
-      L.argpo[k] = s.el_.argpo_rad;
-      L.argpdot[k] = s.ep_.argpdot;
-      L.nodeo[k] = s.el_.nodeo_rad;
-      L.nodedot[k] = s.ep_.nodedot;
-      L.nodecf[k] = s.nodecf_;
-      L.cc1[k] = s.cc1_;
-      L.bstar_cc4[k] = s.el_.bstar_per_er * s.cc4_;
-      L.bstar_cc5[k] = s.el_.bstar_per_er * s.cc5_;
-      L.t2cof[k] = s.t2cof_;
-      L.t3cof[k] = s.t3cof_;
-      L.t4cof[k] = s.t4cof_;
-      L.t5cof[k] = s.t5cof_;
-      L.omgcof[k] = s.omgcof_;
-      L.eta[k] = s.eta_;
-      L.xmcof[k] = s.xmcof_;
-      L.delmo[k] = s.delmo_;
-      L.d2[k] = s.d2_;
-      L.d3[k] = s.d3_;
-      L.d4[k] = s.d4_;
-      L.sinmao[k] = s.sinmao_;
-      L.simp[k] = s.isimp_ ? -std::nan("") : 0.0;  // any all-ones-sign pattern: blend mask
-      L.no_unkozai[k] = s.no_unkozai_;
-      L.ecco[k] = s.el_.ecco;
-      L.am_near[k] = s.am_near_;
-      L.xke[k] = s.k_.xke_per_min;
-      L.j2[k] = s.k_.j2;
-      L.radius_km[k] = s.k_.radius_km;
-      L.sinip[k] = s.sin_inclo_;
-      L.cosip[k] = s.cos_inclo_;
-      L.con41[k] = s.near_.con41;
-      L.x1mth2[k] = s.near_.x1mth2;
-      L.x7thm1[k] = s.near_.x7thm1;
-      L.aycof[k] = s.near_.aycof;
-      L.xlcof[k] = s.near_.xlcof;
-    }
+    // The deep-space lanes: mean_min lane by lane (a lane it fails gets harmless elements and
+    // is flagged; propagate_min then reports its error), the lunar-solar periodics four at a
+    // time, the coefficients short_period makes of the perturbed inclination lane by lane,
+    // then position_velocity_x4.
+    const auto deep_step = [&](const Prepared& P, Out* o) {
+      DeepIn d;
+      for (int k = 0; k < 4; ++k) {
+        PerturbedElements e;
+        double am = 0.0, nm = 0.0;
+        const bool good = p[k]->mean_min(tsince_min[k], e, am, nm) == Sgp4Error::kNone;
+        if (!good) e = PerturbedElements{0.1, 0.5, 0.0, 0.0, 0.0};
+        d.am[k] = good ? am : 2.0;
+        d.nm[k] = good ? nm : P.L.xke[k] / (2.0 * std::sqrt(2.0));
+        d.ep[k] = e.ep;
+        d.inclp[k] = e.inclp;
+        d.nodep[k] = e.nodep;
+        d.argpp[k] = e.argpp;
+        d.mp[k] = e.mp;
+        d.bad[k] = good ? 0.0 : -std::nan("");  // any all-ones-sign pattern: a mask lane
+      }
+      DeepOut e;
+      periodics_x4(P.D, d, tsince_min, &e);
+      ShortLanes S;
+      for (int k = 0; k < 4; ++k) {
+        const Sgp4Propagator::Short c = p[k]->short_period(e.sinip[k], e.cosip[k]);
+        S.sinip[k] = e.sinip[k];
+        S.cosip[k] = e.cosip[k];
+        S.con41[k] = c.con41;
+        S.x1mth2[k] = c.x1mth2;
+        S.x7thm1[k] = c.x7thm1;
+        S.aycof[k] = c.aycof;
+        S.xlcof[k] = c.xlcof;
+      }
+      deep_lanes(P.L, S, d, e, o);
+    };
+    const Prepared& P = *std::launder(reinterpret_cast<const Prepared*>(lanes.storage_));
     Out o;
-    propagate_lanes(L, tsince_min, &o);
+    if (lanes.deep()) {
+      deep_step(P, &o);
+    } else {
+      propagate_lanes(P.L, tsince_min, &o);
+    }
     for (int k = 0; k < 4; ++k) {
       ok[k] = o.bad[k] == 0.0;  // the mask's lanes are all-ones bits (a NaN) or zero
       for (int a = 0; a < 3; ++a) {
@@ -437,76 +521,18 @@ void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min
     return;
   }
 #endif
+  (void)lanes;
   propagate_scalar(p, tsince_min, r_teme_m, v_teme_mps, ok);
 }
 
-// The deep-space lanes (sgp4.hpp): mean_min lane by lane (secular gravity and drag, deep-space
-// secular and resonance terms), the lunar-solar periodics four at a time (periodics_x4), the
-// coefficients short_period makes of the perturbed inclination lane by lane, then
-// position_velocity_x4. A lane that mean_min fails gets harmless elements and is flagged;
-// propagate_min then reports its error.
+void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
+                       double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept {
+  propagate_x4(Sgp4X4Lanes(p), p, tsince_min, r_teme_m, v_teme_mps, ok);
+}
+
 void propagate_deep_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
                        double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept {
-#ifdef EVADE_SGP4_X4
-  if (sgp4_x4_vectorized()) {
-    // Lane k of d: mean_min's elements of p at t (harmless ones and the bad mask if it fails) and
-    // p's lunar-solar coefficients and mode.
-    const auto load_deep_lane = [](const Sgp4Propagator& p, double t_min, int k, DeepIn* d) {
-      PerturbedElements e;
-      double am = 0.0, nm = 0.0;
-      const bool good = p.mean_min(t_min, e, am, nm) == Sgp4Error::kNone;
-      if (!good) e = PerturbedElements{0.1, 0.5, 0.0, 0.0, 0.0};
-      d->am[k] = good ? am : 2.0;
-      d->nm[k] = good ? nm : p.k_.xke_per_min / (2.0 * std::sqrt(2.0));
-      d->ep[k] = e.ep;
-      d->inclp[k] = e.inclp;
-      d->nodep[k] = e.nodep;
-      d->argpp[k] = e.argpp;
-      d->mp[k] = e.mp;
-      d->bad[k] = good ? 0.0 : -std::nan("");  // any all-ones-sign pattern: a mask lane
-      d->afspc[k] = p.mode_ == OperationMode::kAfspc ? 1.0 : 0.0;
-      const LunarSolarPeriodics& c = p.ds_.periodics;
-      const double* from[] = {&c.e3, &c.ee2, &c.se2, &c.se3, &c.sgh2, &c.sgh3, &c.sgh4, &c.sh2,
-                              &c.sh3, &c.si2, &c.si3, &c.sl2, &c.sl3, &c.sl4, &c.xgh2, &c.xgh3,
-                              &c.xgh4, &c.xh2, &c.xh3, &c.xi2, &c.xi3, &c.xl2, &c.xl3, &c.xl4,
-                              &c.zmol, &c.zmos};
-      double* to[] = {d->e3, d->ee2, d->se2, d->se3, d->sgh2, d->sgh3, d->sgh4, d->sh2,
-                      d->sh3, d->si2, d->si3, d->sl2, d->sl3, d->sl4, d->xgh2, d->xgh3,
-                      d->xgh4, d->xh2, d->xh3, d->xi2, d->xi3, d->xl2, d->xl3, d->xl4,
-                      d->zmol, d->zmos};
-      for (std::size_t m = 0; m < sizeof(from) / sizeof(from[0]); ++m) to[m][k] = *from[m];
-    };
-    DeepIn d;
-    for (int k = 0; k < 4; ++k) load_deep_lane(*p[k], tsince_min[k], k, &d);
-    DeepOut e;
-    periodics_x4(d, tsince_min, &e);
-    Lanes L;
-    for (int k = 0; k < 4; ++k) {
-      const Sgp4Propagator::Short c = p[k]->short_period(e.sinip[k], e.cosip[k]);
-      L.sinip[k] = e.sinip[k];
-      L.cosip[k] = e.cosip[k];
-      L.con41[k] = c.con41;
-      L.x1mth2[k] = c.x1mth2;
-      L.x7thm1[k] = c.x7thm1;
-      L.aycof[k] = c.aycof;
-      L.xlcof[k] = c.xlcof;
-      L.xke[k] = p[k]->k_.xke_per_min;
-      L.j2[k] = p[k]->k_.j2;
-      L.radius_km[k] = p[k]->k_.radius_km;
-    }
-    Out o;
-    deep_lanes(L, d, e, &o);
-    for (int k = 0; k < 4; ++k) {
-      ok[k] = o.bad[k] == 0.0;
-      for (int a = 0; a < 3; ++a) {
-        r_teme_m[k][a] = o.r[a][k];
-        v_teme_mps[k][a] = o.v[a][k];
-      }
-    }
-    return;
-  }
-#endif
-  propagate_scalar(p, tsince_min, r_teme_m, v_teme_mps, ok);
+  propagate_x4(Sgp4X4Lanes(p), p, tsince_min, r_teme_m, v_teme_mps, ok);
 }
 
 }  // namespace evade::sgp4

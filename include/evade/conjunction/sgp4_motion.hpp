@@ -30,7 +30,9 @@
 // assumption and how it is checked.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -154,6 +156,25 @@ class Sgp4Motion : public MotionSource {
   friend struct Sgp4CatalogBuilder;
   bool four_lane(std::size_t i) const { return four_lane_[i] != 0; }
   bool deep_lane(std::size_t i) const { return four_lane_[i] == 2; }
+  /// Objects per window of the prepared lane groups (the screening's step runner asks for
+  /// grid states in chunks of as many: each is one window).
+  static constexpr std::size_t kLaneWindow = 64;
+  // Four near-Earth or four deep-space objects of one window (a short group repeats its last
+  // object; n are its own).
+  struct LaneGroup {
+    std::array<std::uint32_t, 4> obj{};
+    std::size_t n = 0;
+  };
+  // The groups of each window [w kLaneWindow, (w + 1) kLaneWindow) and their constants,
+  // gathered once (sgp4::Sgp4X4Lanes); window w has groups [first[w], first[w + 1]).
+  void build_lane_groups();
+  // The grid states of window w's objects (its prepared groups, the rest one by one).
+  void window_states(std::size_t w, double t_s, StateEci* out) const;
+  // The grid states of objects [begin, end), grouped by four on the spot.
+  void grouped_states(double t_s, std::size_t begin, std::size_t end, StateEci* out) const;
+  std::vector<LaneGroup> groups_;
+  std::vector<sgp4::Sgp4X4Lanes> group_lanes_;
+  std::vector<std::size_t> window_first_group_;
   std::vector<sgp4::Sgp4Propagator> props_;
   std::vector<double> offset_s_;  // start - element epoch [s]
   std::vector<char> four_lane_;   // grid states four at a time: 1 propagate_near_x4, 2 _deep_x4

@@ -88,6 +88,32 @@ void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min
 void propagate_deep_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
                        double r_teme_m[4][3], double v_teme_mps[4][3], bool ok[4]) noexcept;
 
+/// Bytes of an Sgp4X4Lanes' gathered constants.
+constexpr std::size_t kSgp4X4LanesBytes = 2048;
+
+/// The constants of four propagators (all near-Earth or all deep-space, init_error() kNone),
+/// gathered once for propagate_x4 at many instants (propagate_near_x4 and propagate_deep_x4
+/// gather them at every call). Holds no pointer to them.
+class Sgp4X4Lanes {
+ public:
+  Sgp4X4Lanes() = default;
+  explicit Sgp4X4Lanes(const Sgp4Propagator* const p[4]) noexcept;
+  bool deep() const noexcept { return deep_; }
+
+ private:
+  friend void propagate_x4(const Sgp4X4Lanes& lanes, const Sgp4Propagator* const p[4],
+                           const double tsince_min[4], double r_teme_m[4][3],
+                           double v_teme_mps[4][3], bool ok[4]) noexcept;
+  bool deep_ = false;
+  alignas(32) unsigned char storage_[kSgp4X4LanesBytes] = {};
+};
+
+/// propagate_near_x4 or propagate_deep_x4 (as lanes.deep()) of the propagators p, whose
+/// constants lanes holds (Sgp4X4Lanes(p)).
+void propagate_x4(const Sgp4X4Lanes& lanes, const Sgp4Propagator* const p[4],
+                  const double tsince_min[4], double r_teme_m[4][3], double v_teme_mps[4][3],
+                  bool ok[4]) noexcept;
+
 /// Bound on |r_x4 - r| / |r| between propagate_near_x4 (or propagate_deep_x4) and propagate_min positions
 /// (docs/VALIDATION.md: about 100 times the largest measured, 1.03e-15 on the shipped
 /// catalog; a fortieth of the 4e-12 |r| jumps SGP4's own positions are allowed).
@@ -124,12 +150,10 @@ class Sgp4Propagator {
   RadiusBounds radius_bounds(double t0_min, double t1_min) const noexcept;
 
  private:
-  friend void propagate_near_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
-                                double r_teme_m[4][3], double v_teme_mps[4][3],
-                                bool ok[4]) noexcept;
-  friend void propagate_deep_x4(const Sgp4Propagator* const p[4], const double tsince_min[4],
-                                double r_teme_m[4][3], double v_teme_mps[4][3],
-                                bool ok[4]) noexcept;
+  friend class Sgp4X4Lanes;
+  friend void propagate_x4(const Sgp4X4Lanes& lanes, const Sgp4Propagator* const p[4],
+                           const double tsince_min[4], double r_teme_m[4][3],
+                           double v_teme_mps[4][3], bool ok[4]) noexcept;
   struct Short {
     double con41, x1mth2, x7thm1, aycof, xlcof;
   };
