@@ -16,9 +16,12 @@
 // the scalar loop exits. The differences stay far inside kSgp4X4PositionError_m (1 mm;
 // docs/VALIDATION.md, test/sgp4/sgp4_x4_test.cpp). Anything unusual (an error or decay, a
 // short-period correction beyond the rotation range) sends the lane back to propagate_min.
-// Deep-space lanes (propagate_deep_x4, SDP4) take their secular, resonance and lunar-solar
-// terms from the scalar code lane by lane (Sgp4Propagator::perturbed_min) and share the rest
-// (position_velocity_x4), with the perturbed inclination's sine and cosine from libmvec.
+// Deep-space lanes (propagate_deep_x4, SDP4) take their secular and resonance terms from the
+// scalar code lane by lane (Sgp4Propagator::mean_min), then the lunar-solar periodics of
+// deep_space.cpp (periodics_x4, with libmvec's sine, cosine and arctangent) and the rest
+// (position_velocity_x4) in the lanes. Sgp4X4Lanes gathers four element sets' constants once
+// for many instants (propagate_x4); propagate_near_x4 and propagate_deep_x4 gather them at
+// every call.
 #include "evade/sgp4/sgp4.hpp"
 
 #include <cmath>
@@ -371,7 +374,7 @@ __attribute__((target("avx2,fma"))) void periodics_x4(const DeepCoef& c, const D
   _mm256_storeu_pd(o->cosip, cos_x4(incl));
 }
 
-// position_velocity_x4 of the deep-space lanes (L: their perturbed inclination's coefficients).
+// position_velocity_x4 of the deep-space lanes (S: their perturbed inclination's coefficients).
 __attribute__((target("avx2,fma"))) void deep_lanes(const Lanes& L, const ShortLanes& S, const DeepIn& d,
                                                 const DeepOut& e, Out* o) noexcept {
   Perturbed q;
