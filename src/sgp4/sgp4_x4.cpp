@@ -18,7 +18,8 @@
 // short-period correction beyond the rotation range) sends the lane back to propagate_min.
 // Deep-space lanes (propagate_deep_x4, SDP4) take their secular and resonance terms from the
 // scalar code lane by lane (Sgp4Propagator::mean_min), then the lunar-solar periodics of
-// deep_space.cpp (periodics_x4, with libmvec's sine, cosine and arctangent) and the rest
+// deep_space.cpp (periodics_x4, with libmvec's sine and cosine; Lyddane's arctangent lane by
+// lane) and the rest
 // (position_velocity_x4) in the lanes. Sgp4X4Lanes gathers four element sets' constants once
 // for many instants (propagate_x4); propagate_near_x4 and propagate_deep_x4 gather them at
 // every call.
@@ -59,7 +60,6 @@ void propagate_scalar(const Sgp4Propagator* const p[4], const double tsince_min[
 extern "C" {
 __attribute__((target("avx2,fma"))) __m256d sin_x4(__m256d x) __asm__("_ZGVdN4v_sin");
 __attribute__((target("avx2,fma"))) __m256d cos_x4(__m256d x) __asm__("_ZGVdN4v_cos");
-__attribute__((target("avx2,fma"))) __m256d atan2_x4(__m256d y, __m256d x) __asm__("_ZGVdN4vv_atan2");
 }
 
 namespace {
@@ -350,13 +350,22 @@ __attribute__((target("avx2,fma"))) void periodics_x4(const DeepCoef& c, const D
   V node = mod_two_pi(nodep0);
   node = add(node, vand(vand(afspc, lt(node, splat(0.0))), splat(kTwoPi)));
   const V xls = add(add(add(add(mp0, argpp0), pl), pgh), mul(sub(cosip, mul(pinc, sinip)), node));
-  V nodel = atan2_x4(alfdp, betdp);
+  // Lyddane's node by std::atan2 lane by lane, as deep_space_periodics (libmvec's two-argument
+  // atan2 came out wrong through Clang's -O0 calls), where some lane takes that branch.
+  const V hi = ge(inclp, splat(0.2));
+  V nodel = nodep_hi;
+  if (_mm256_movemask_pd(hi) != 0xF) {
+    alignas(32) double y[4], x[4], a[4];
+    _mm256_store_pd(y, alfdp);
+    _mm256_store_pd(x, betdp);
+    for (int k = 0; k < 4; ++k) a[k] = std::atan2(y[k], x[k]);
+    nodel = _mm256_load_pd(a);
+  }
   nodel = add(nodel, vand(vand(afspc, lt(nodel, splat(0.0))), splat(kTwoPi)));
   const V wrap = gt(vabs(sub(node, nodel)), splat(kPi));
   nodel = add(nodel, vand(wrap, pick(lt(nodel, node), splat(kTwoPi), splat(-kTwoPi))));
   q.mp = add(mp0, pl);
   const V argpp_lo = sub(sub(xls, q.mp), mul(cosip, nodel));
-  const V hi = ge(inclp, splat(0.2));
   V incl = inclp;
   q.nodep = pick(hi, nodep_hi, nodel);
   q.argpp = pick(hi, argpp_hi, argpp_lo);
