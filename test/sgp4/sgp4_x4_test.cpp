@@ -84,7 +84,7 @@ TEST(Sgp4X4, PositionsWithinATenthOfTheStatedBoundOnTheShippedCatalogOverSevenDa
 TEST(Sgp4X4, DeepSpaceLanesWithinATenthOfTheStatedBoundOnTheShippedCatalogOverSevenDays) {
   // The shipped catalog's SDP4 element sets (GEO, Molniya, GTO, resonant and not) through
   // propagate_deep_x4, against its own relative bound (the lunar-solar periodics four at a
-  // time too: Lyddane's node by the vector arctangent); in metres they are allowed
+  // time too); in metres they are allowed
   // max(1 mm, 10 kSgp4X4DeepPositionErrorRel r_max) (Sgp4Motion).
   // Both operation modes (they differ in Lyddane's node, which the GEO objects take).
   for (const OperationMode mode : {OperationMode::kImproved, OperationMode::kAfspc}) {

@@ -119,8 +119,8 @@ void propagate_x4(const Sgp4X4Lanes& lanes, const Sgp4Propagator* const p[4],
 /// catalog; a fortieth of the 4e-12 |r| jumps SGP4's own positions are allowed).
 constexpr double kSgp4X4PositionErrorRel = 1e-13;
 /// The same bound for propagate_deep_x4 (about 70 times the largest measured, 1.47e-14 on
-/// the shipped catalog's deep-space element sets: their eccentric orbits and the vector
-/// arctangent of Lyddane's node; a quarter of the 4e-12 |r| jumps).
+/// the shipped catalog's deep-space element sets, from their eccentric orbits; a quarter of
+/// the 4e-12 |r| jumps).
 constexpr double kSgp4X4DeepPositionErrorRel = 1e-12;
 /// The same as a distance [m]: 1 mm, far above kSgp4X4PositionErrorRel |r| for every
 /// near-Earth orbit (period < 225 min, so |r| < 2 a < 2.4e7 m: 2.4e-6 m); a deep-space orbit
