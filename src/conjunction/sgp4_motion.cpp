@@ -269,24 +269,60 @@ void Sgp4Motion::grid_states_at(double t_s, std::size_t begin, std::size_t end,
 
 void Sgp4Motion::window_states(std::size_t w, double t_s, StateEci* out) const {
   const std::size_t w0 = w * kLaneWindow, w1 = std::min(size(), w0 + kLaneWindow);
-  for (std::size_t i = w0; i < w1; ++i)
+  scalar_states(t_s, w0, w1, out);
+  for (std::size_t g = window_first_group_[w]; g < window_first_group_[w + 1]; ++g)
+    group_states(groups_[g], group_lanes_[g], t_s, out);
+}
+
+void Sgp4Motion::grouped_states(double t_s, std::size_t begin, std::size_t end,
+                                StateEci* out) const {
+  scalar_states(t_s, begin, end, out);
+  for (const LaneGroup& lg : lane_groups(begin, end)) group_states(lg, lanes_of(lg), t_s, out);
+}
+
+void Sgp4Motion::scalar_states(double t_s, std::size_t begin, std::size_t end, StateEci* out) const {
+  for (std::size_t i = begin; i < end; ++i)
     if (!four_lane(i)) out[i] = grid_state_at(i, t_s);
-  for (std::size_t g = window_first_group_[w]; g < window_first_group_[w + 1]; ++g) {
-    const LaneGroup& lg = groups_[g];
-    const sgp4::Sgp4Propagator* p[4];
-    double tsince_min[4], r[4][3], v[4][3];
-    bool ok[4];
-    for (std::size_t k = 0; k < 4; ++k) {
-      p[k] = &props_[lg.obj[k]];
-      tsince_min[k] = (offset_s_[lg.obj[k]] + t_s) / 60.0;  // as propagate_s
-    }
-    sgp4::propagate_x4(group_lanes_[g], p, tsince_min, r, v, ok);
-    for (std::size_t k = 0; k < lg.n; ++k) {
-      const std::size_t i = lg.obj[k];
-      out[i] = ok[k] ? StateEci{Vec3(r[k][0], r[k][1], r[k][2]), Vec3(v[k][0], v[k][1], v[k][2])}
-                     : grid_state_at(i, t_s);  // an error: named by state_at
+}
+
+void Sgp4Motion::group_states(const LaneGroup& lg, const sgp4::Sgp4X4Lanes& lanes, double t_s,
+                              StateEci* out) const {
+  const sgp4::Sgp4Propagator* p[4];
+  double tsince_min[4], r[4][3], v[4][3];
+  bool ok[4];
+  for (std::size_t k = 0; k < 4; ++k) {
+    p[k] = &props_[lg.obj[k]];
+    tsince_min[k] = (offset_s_[lg.obj[k]] + t_s) / 60.0;  // as propagate_s
+  }
+  sgp4::propagate_x4(lanes, p, tsince_min, r, v, ok);
+  for (std::size_t k = 0; k < lg.n; ++k) {
+    const std::size_t i = lg.obj[k];
+    out[i] = ok[k] ? StateEci{Vec3(r[k][0], r[k][1], r[k][2]), Vec3(v[k][0], v[k][1], v[k][2])}
+                   : grid_state_at(i, t_s);  // an error: named by state_at
+  }
+}
+
+sgp4::Sgp4X4Lanes Sgp4Motion::lanes_of(const LaneGroup& lg) const {
+  const sgp4::Sgp4Propagator* p[4];
+  for (std::size_t k = 0; k < 4; ++k) p[k] = &props_[lg.obj[k]];
+  return sgp4::Sgp4X4Lanes(p);
+}
+
+std::vector<Sgp4Motion::LaneGroup> Sgp4Motion::lane_groups(std::size_t begin, std::size_t end) const {
+  std::vector<LaneGroup> out;
+  for (const char kind : {char{1}, char{2}}) {  // near-Earth, then deep-space groups
+    LaneGroup lg{};
+    for (std::size_t i = begin; i <= end; ++i) {
+      if (i < end && four_lane_[i] != kind) continue;
+      if (i < end) lg.obj[lg.n++] = static_cast<std::uint32_t>(i);
+      if (lg.n == 4 || (i == end && lg.n > 0)) {
+        for (std::size_t k = lg.n; k < 4; ++k) lg.obj[k] = lg.obj[lg.n - 1];  // repeats the last
+        out.push_back(lg);
+        lg = LaneGroup{};
+      }
     }
   }
+  return out;
 }
 
 void Sgp4Motion::build_lane_groups() {
@@ -294,64 +330,12 @@ void Sgp4Motion::build_lane_groups() {
   group_lanes_.clear();
   window_first_group_.assign(1, 0);
   for (std::size_t w0 = 0; w0 < size(); w0 += kLaneWindow) {
-    const std::size_t w1 = std::min(size(), w0 + kLaneWindow);
-    for (const char kind : {char{1}, char{2}}) {  // near-Earth, then deep-space groups
-      LaneGroup lg{};
-      for (std::size_t i = w0; i <= w1; ++i) {
-        if (i < w1 && four_lane_[i] != kind) continue;
-        if (i < w1) lg.obj[lg.n++] = static_cast<std::uint32_t>(i);
-        if (lg.n == 4 || (i == w1 && lg.n > 0)) {
-          for (std::size_t k = lg.n; k < 4; ++k) lg.obj[k] = lg.obj[lg.n - 1];  // repeats the last
-          const sgp4::Sgp4Propagator* p[4];
-          for (std::size_t k = 0; k < 4; ++k) p[k] = &props_[lg.obj[k]];
-          groups_.push_back(lg);
-          group_lanes_.emplace_back(p);
-          lg = LaneGroup{};
-        }
-      }
+    for (const LaneGroup& lg : lane_groups(w0, std::min(size(), w0 + kLaneWindow))) {
+      groups_.push_back(lg);
+      group_lanes_.push_back(lanes_of(lg));
     }
     window_first_group_.push_back(groups_.size());
   }
-}
-
-void Sgp4Motion::grouped_states(double t_s, std::size_t begin, std::size_t end,
-                                StateEci* out) const {
-  std::size_t lanes[2][4];  // near-Earth, deep-space objects waiting for a group of four
-  int count[2] = {0, 0};
-  const auto run = [&](int deep) {
-    const std::size_t* lane = lanes[deep];
-    int& n = count[deep];
-    const sgp4::Sgp4Propagator* p[4];
-    double tsince_min[4], r[4][3], v[4][3];
-    bool ok[4];
-    for (int k = 0; k < 4; ++k) {  // a short group repeats its last object
-      const std::size_t i = lane[std::min(k, n - 1)];
-      p[k] = &props_[i];
-      tsince_min[k] = (offset_s_[i] + t_s) / 60.0;  // as propagate_s
-    }
-    if (deep != 0) {
-      sgp4::propagate_deep_x4(p, tsince_min, r, v, ok);
-    } else {
-      sgp4::propagate_near_x4(p, tsince_min, r, v, ok);
-    }
-    for (int k = 0; k < n; ++k) {
-      const std::size_t i = lane[k];
-      out[i] = ok[k] ? StateEci{Vec3(r[k][0], r[k][1], r[k][2]), Vec3(v[k][0], v[k][1], v[k][2])}
-                     : grid_state_at(i, t_s);  // an error: named by state_at
-    }
-    n = 0;
-  };
-  for (std::size_t i = begin; i < end; ++i) {
-    if (!four_lane(i)) {
-      out[i] = grid_state_at(i, t_s);
-      continue;
-    }
-    const int deep = deep_lane(i) ? 1 : 0;
-    lanes[deep][count[deep]++] = i;
-    if (count[deep] == 4) run(deep);
-  }
-  for (int deep = 0; deep < 2; ++deep)
-    if (count[deep] > 0) run(deep);
 }
 
 double Sgp4Motion::grid_velocity_error_mps(std::size_t i) const {

@@ -172,6 +172,15 @@ class Sgp4Motion : public MotionSource {
   void window_states(std::size_t w, double t_s, StateEci* out) const;
   // The grid states of objects [begin, end), grouped by four on the spot.
   void grouped_states(double t_s, std::size_t begin, std::size_t end, StateEci* out) const;
+  // The grid states of the objects of [begin, end) not computed four at a time.
+  void scalar_states(double t_s, std::size_t begin, std::size_t end, StateEci* out) const;
+  // The grid states of group lg's own objects from its lanes (a flagged lane by grid_state_at).
+  void group_states(const LaneGroup& lg, const sgp4::Sgp4X4Lanes& lanes, double t_s,
+                    StateEci* out) const;
+  // The groups of four near-Earth, then four deep-space objects of [begin, end), in object
+  // order, and a group's constants.
+  std::vector<LaneGroup> lane_groups(std::size_t begin, std::size_t end) const;
+  sgp4::Sgp4X4Lanes lanes_of(const LaneGroup& lg) const;
   std::vector<LaneGroup> groups_;
   std::vector<sgp4::Sgp4X4Lanes> group_lanes_;
   std::vector<std::size_t> window_first_group_;
