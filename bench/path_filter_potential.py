@@ -23,7 +23,8 @@ filter could set aside on a catalog, after the perigee/apogee filter, over the s
 
 Prints one JSON line: objects, perigee/apogee survivors, crossings examined, survivors with a
 crossing within D (kept by any path filter), and the upper bound on what a path filter sets
-aside. Needs numpy and sgp4 (PyPI, accelerated).
+aside. Needs numpy and sgp4 (PyPI, accelerated). The proven filter evade runs is
+include/evade/conjunction/primary_path_filter.hpp (docs/VALIDATION.md compares the two).
 
   python3 bench/path_filter_potential.py --tle CATALOG.tle --primary 90000 \\
       --span-s 604800 --threshold-m 5000

@@ -62,7 +62,7 @@ bool given(const Options& o, const std::string& flag) {
 void refuse_inapplicable(const Options& o) {
   const bool catalog = !o.catalog.tle_path.empty() || !o.catalog.omm_path.empty();
   const std::vector<const char*> catalog_only = {"--primary", "--start", "--no-prefilter",
-                                                 "--no-time-filter"};
+                                                 "--no-time-filter", "--no-path-filter"};
   const std::vector<const char*> objects_only = {"--population", "--objects", "--seed",
                                                  "--trace", "--csv"};
   for (const char* f : catalog ? objects_only : catalog_only) {
@@ -186,10 +186,12 @@ Runner setup(CLI::App& app) {
                "with --primary: propagate every object (no perigee/apogee filter first)");
   app.add_flag("--no-time-filter", c.no_time_filter,
                "with --primary: screen every object kept by the perigee/apogee filter over the whole span");
+  app.add_flag("--no-path-filter", c.no_path_filter,
+               "with --primary: keep every object the perigee/apogee filter keeps (no orbit-path filter)");
   add_cdm_out_options(app, c.cdm);
   for (const char* f : {"--primary", "--span-s", "--threshold-m", "--step-s", "--start", "--no-prefilter",
-                        "--no-time-filter", "--population", "--objects", "--seed", "--trace", "--csv", "--method",
-                        "--threads"}) {
+                        "--no-time-filter", "--no-path-filter", "--population", "--objects", "--seed", "--trace",
+                        "--csv", "--method", "--threads"}) {
     o->flags.emplace_back(f, app.get_option(f));
   }
   return [o]() { return run(*o); };

@@ -22,6 +22,7 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   req.threads = o.threads;
   req.prefilter = !o.no_prefilter;
   req.time_filter = !o.no_time_filter;
+  req.path_filter = !o.no_path_filter;
   req.cdm = screen_cdm_options(o.cdm);
   req.validate();
   req.catalog = read_catalog_file(o.tle_path, o.omm_path);

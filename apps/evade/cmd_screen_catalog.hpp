@@ -20,6 +20,7 @@ struct CatalogScreenOptions {
   int threads = 0;           ///< 0: hardware concurrency
   bool no_prefilter = false; ///< --no-prefilter: with --primary, propagate every object
   bool no_time_filter = false; ///< --no-time-filter: with --primary, screen the whole span
+  bool no_path_filter = false; ///< --no-path-filter: with --primary, no orbit-path filter
   bool json = false;
   bool quiet = false;
   CdmOutOptions cdm;         ///< --cdm-out DIR ...: one CDM per event

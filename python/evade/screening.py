@@ -42,7 +42,8 @@ def screen(scenario: Optional[str] = None, *, catalog: Union[None, PathOrText, C
            seed: Optional[int] = None, method: str = "robust", primary: Optional[int] = None,
            span_s: Optional[float] = None, threshold_m: Optional[float] = None,
            step_s: Optional[float] = None, start_utc: Optional[str] = None,
-           prefilter: bool = True, time_filter: bool = True, trace: bool = False, threads: int = 0,
+           prefilter: bool = True, path_filter: bool = True, time_filter: bool = True,
+           trace: bool = False, threads: int = 0,
            set: Union[None, Mapping[str, object], Sequence[str]] = None) -> ScreenResult:
     """Screens for close approaches, as ``evade screen`` does.
 
@@ -51,7 +52,9 @@ def screen(scenario: Optional[str] = None, *, catalog: Union[None, PathOrText, C
     ``method`` 'paper' or 'robust' (``trace``: the paper's every sample).
     Catalog: ``catalog`` (a path, the text, or a :class:`evade.sgp4.Catalog`) moved by SGP4,
     ``primary`` a NORAD id to screen against it (``prefilter``: set aside by perigee/apogee
-    the objects that can never come within the threshold; ``time_filter``: then screen each
+    the objects that can never come within the threshold; ``path_filter``: then by the orbit
+    path those whose radius near the primary's orbit plane stays far from the primary's;
+    ``time_filter``: then screen each
     object only when it can be within the threshold), ``start_utc`` (default: the latest
     element epoch).
     Both: ``span_s`` [s], ``threshold_m`` [m] (robust), ``step_s`` [s] (robust grid step; 0
@@ -67,10 +70,11 @@ def screen(scenario: Optional[str] = None, *, catalog: Union[None, PathOrText, C
         source = "<catalog>" if isinstance(catalog, Catalog) or is_text(catalog) else os.fspath(catalog)
         doc = _evade.screen_catalog(read_catalog(catalog), source, -1 if primary is None else int(primary),
                                     flags, start_utc or "", int(threads), bool(prefilter),
-                                    bool(time_filter))
+                                    bool(path_filter), bool(time_filter))
         return ScreenResult(doc, catalog=True)
     _refuse("a screen of objects (no catalog=)", primary=primary, start_utc=start_utc,
-            prefilter=None if prefilter else False, time_filter=None if time_filter else False)
+            prefilter=None if prefilter else False, path_filter=None if path_filter else False,
+            time_filter=None if time_filter else False)
     if seed is not None and population is None:
         raise _evade.InputError("seed: applies only with population (the seed of the synthetic population)")
     csv = "" if objects_csv is None else os.fspath(objects_csv)

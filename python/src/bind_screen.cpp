@@ -42,7 +42,7 @@ nb::object screen_objects(const std::string& scenario, const std::vector<std::st
 
 nb::object screen_catalog(const sgp4::Catalog& catalog, const std::string& source, long primary,
                           const std::vector<std::string>& overrides, const std::string& start_utc,
-                          int threads, bool prefilter, bool time_filter) {
+                          int threads, bool prefilter, bool path_filter, bool time_filter) {
   ScreenCatalogRequest req;
   req.source = source;
   req.primary_norad = primary;
@@ -50,6 +50,7 @@ nb::object screen_catalog(const sgp4::Catalog& catalog, const std::string& sourc
   req.start_utc = start_utc;
   req.threads = threads;
   req.prefilter = prefilter;
+  req.path_filter = path_filter;
   req.time_filter = time_filter;
   req.validate();
   req.catalog = catalog;
@@ -69,7 +70,7 @@ void bind_screen(nb::module_& m) {
         nb::arg("threads"), "The JSON document of `evade screen` on objects.");
   m.def("screen_catalog", &screen_catalog, nb::arg("catalog"), nb::arg("source"), nb::arg("primary"),
         nb::arg("overrides"), nb::arg("start_utc"), nb::arg("threads"), nb::arg("prefilter"),
-        nb::arg("time_filter"), "The JSON document of `evade screen --tle/--omm`.");
+        nb::arg("path_filter"), nb::arg("time_filter"), "The JSON document of `evade screen --tle/--omm`.");
 }
 
 }  // namespace evade::python

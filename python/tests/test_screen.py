@@ -61,6 +61,23 @@ def test_catalog_primary_without_time_filter_equals_cli_and_the_filtered_events(
     assert len(whole["events"]) > 0
 
 
+def test_catalog_primary_without_path_filter_equals_cli_and_the_same_events(repo, cli_json):
+    args = ["screen", "--tle", str(repo / CATALOG), "--primary", "90000", "--span-s", "86400",
+            "--threshold-m", "50000", "--threads", "2", "--quiet"]
+    unfiltered = cli_json(args + ["--no-path-filter"])
+    r = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=86400, threshold_m=50000,
+                     threads=2, path_filter=False)
+    assert without_wall_times(r.to_dict()) == without_wall_times(unfiltered)
+    assert unfiltered["prefilter"]["removed_orbit_path"] == 0
+    filtered = cli_json(args)
+    assert filtered["prefilter"]["removed_orbit_path"] > 0
+    assert (filtered["prefilter"]["propagated"] + filtered["prefilter"]["removed_orbit_path"]
+            == unfiltered["prefilter"]["propagated"])
+    key = lambda e: (e["norad_j"], round(e["tca_s"], 3), round(e["miss_m"], 2))
+    assert [key(e) for e in filtered["events"]] == [key(e) for e in unfiltered["events"]]
+    assert len(filtered["events"]) > 0
+
+
 def test_catalog_all_pairs_with_span_equals_cli(repo, cli_json):
     doc = cli_json(["screen", "--tle", str(repo / CATALOG), "--span-s", "1800", "--threads", "2", "--quiet"])
     r = evade.screen(catalog=(repo / CATALOG).read_text(), span_s=1800, threads=2)

@@ -2,6 +2,8 @@
 // (include/evade/conjunction/primary_prefilter.hpp gives the argument).
 #include "evade/conjunction/primary_prefilter.hpp"
 
+#include "evade/conjunction/primary_path_filter.hpp"
+
 #include "evade/sgp4/sgp4.hpp"
 
 #include <algorithm>
@@ -92,17 +94,66 @@ bool may_come_within(const sgp4::RadiusBounds& p, const sgp4::RadiusBounds& bj, 
   return keep;
 }
 
+// The orbit-path filter over the padded span of each of `kept` but the primary (index
+// primary in kept), on `threads` threads: never[k] = 1 when object k is set aside; the tests
+// are added to c.
+std::vector<char> path_filter_all(const std::vector<sgp4::MeanElements>& kept, std::size_t primary,
+                                  double start_j2000_s, double span_s, double threshold_m,
+                                  int threads, PrimaryPrefilterCounts& c) {
+  std::vector<char> never(kept.size(), 0);
+  std::vector<long> tests(kept.size(), 0);
+  const auto offset = [&](std::size_t k) { return start_j2000_s - sgp4::epoch_seconds_since_j2000(kept[k]); };
+  const sgp4::Sgp4Propagator p(kept[primary], sgp4::OperationMode::kImproved);
+  if (p.deep_space() || p.init_error() != sgp4::Sgp4Error::kNone) return never;
+  const std::size_t n_threads = static_cast<std::size_t>(std::max(1, threads));
+  const auto work = [&](std::size_t first) {
+    for (std::size_t k = first; k < kept.size(); k += n_threads) {
+      if (k == primary) continue;
+      const sgp4::Sgp4Propagator j(kept[k], sgp4::OperationMode::kImproved);
+      const PathFilterResult r = path_never_within(p, offset(primary), j, offset(k), -kPrefilterPadS,
+                                                   span_s + kPrefilterPadS, threshold_m);
+      never[k] = r.never_within ? 1 : 0;
+      tests[k] = r.tests;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < n_threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& t : pool) t.join();
+  for (long t : tests) c.path_tests += t;
+  return never;
+}
+
+// The index of the first element set with this NORAD id, -1 when there is none.
+long index_of(const std::vector<sgp4::MeanElements>& all, long norad) {
+  for (std::size_t k = 0; k < all.size(); ++k)
+    if (all[k].norad_id == norad) return static_cast<long>(k);
+  return -1;
+}
+
+// Removes the entries k of v with marked[k] != 0, keeping the order; returns how many.
+long drop_marked(std::vector<sgp4::MeanElements>& v, const std::vector<char>& marked) {
+  std::size_t out = 0;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    if (marked[k] == 0) {
+      if (out != k) v[out] = v[k];
+      ++out;
+    }
+  const long dropped = static_cast<long>(v.size() - out);
+  v.resize(out);
+  return dropped;
+}
+
 }  // namespace
 
 std::vector<sgp4::MeanElements> prefilter_primary(const std::vector<sgp4::MeanElements>& all,
                                                   long primary_norad, double start_j2000_s,
                                                   double span_s, double threshold_m,
-                                                  PrimaryPrefilterCounts* counts, int threads) {
+                                                  PrimaryPrefilterCounts* counts, int threads,
+                                                  bool path_filter) {
   PrimaryPrefilterCounts c;
   c.objects = static_cast<long>(all.size());
-  long primary = -1;
-  for (std::size_t k = 0; k < all.size() && primary < 0; ++k)
-    if (all[k].norad_id == primary_norad) primary = static_cast<long>(k);
+  const long primary = index_of(all, primary_norad);
   std::vector<long> sampled;
   const std::vector<sgp4::RadiusBounds> b =
       primary >= 0 ? all_bounds(all, start_j2000_s, span_s, threads, sampled) : std::vector<sgp4::RadiusBounds>{};
@@ -110,10 +161,17 @@ std::vector<sgp4::MeanElements> prefilter_primary(const std::vector<sgp4::MeanEl
   c.primary_bounded = p.bounded;
   if (primary >= 0) c.sampled = sampled[static_cast<std::size_t>(primary)];
   std::vector<sgp4::MeanElements> kept;
+  std::size_t primary_kept = 0;
   for (std::size_t k = 0; k < all.size(); ++k) {
     const bool others = p.bounded && static_cast<long>(k) != primary;
     if (others) c.sampled += sampled[k];
+    if (static_cast<long>(k) == primary) primary_kept = kept.size();
     if (!others || may_come_within(p, b[k], threshold_m, c)) kept.push_back(all[k]);
+  }
+  if (path_filter && p.bounded) {
+    const std::vector<char> never =
+        path_filter_all(kept, primary_kept, start_j2000_s, span_s, threshold_m, threads, c);
+    c.removed_path = drop_marked(kept, never);
   }
   c.kept = static_cast<long>(kept.size());
   if (counts) *counts = c;

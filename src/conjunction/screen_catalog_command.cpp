@@ -55,7 +55,7 @@ Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
   if (filter) {
     counts->emplace();
     kept = prefilter_primary(req.catalog.objects, req.primary_norad, mo.start_j2000_s,
-                             req.span_s, req.threshold_m, &**counts, mo.threads);
+                             req.span_s, req.threshold_m, &**counts, mo.threads, req.path_filter);
   }
   Sgp4Screening s = sgp4_screening(filter ? kept : req.catalog.objects, mo);
   if (req.diagnostic)
@@ -185,7 +185,8 @@ ScreenCatalogResult run_windowed(const ScreenCatalogRequest& req) {
   const double start_s = screen_start_j2000_s(req);
   const ScreenOptions base = base_options(req);
   const std::vector<sgp4::MeanElements> kept = prefilter_primary(
-      req.catalog.objects, req.primary_norad, start_s, req.span_s, req.threshold_m, &counts, base.threads);
+      req.catalog.objects, req.primary_norad, start_s, req.span_s, req.threshold_m, &counts, base.threads,
+      req.path_filter);
   const auto t1 = Clock::now();
   const PrimaryWindowScreen w = screen_primary_windows(kept, req.primary_norad, start_s, req.span_s,
                                                        base, TimeFilterOptions{req.threshold_m});
@@ -241,6 +242,8 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
   if (r.prefilter)
     j["prefilter"] = {{"objects", r.prefilter->objects},
                       {"removed_perigee_apogee", r.prefilter->removed_radius},
+                      {"removed_orbit_path", r.prefilter->removed_path},
+                      {"orbit_path_tests", r.prefilter->path_tests},
                       {"kept_without_radius_bound", r.prefilter->unbounded},
                       {"deep_space_sampled", r.prefilter->sampled},
                       {"propagated", r.prefilter->kept},

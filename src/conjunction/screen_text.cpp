@@ -69,10 +69,10 @@ std::string to_text(const ScreenCatalogResult& r) {
                          utc_text_ms(r.start_j2000_s).c_str(), r.span_s, r.threshold_m, r.events.size(),
                          r.screen_wall_s);
   if (r.prefilter)
-    s += format_text("  prefilter (perigee/apogee against the primary): %ld of %ld objects set aside, "
-                     "%ld kept without a radius bound, %ld propagated\n",
-                     r.prefilter->removed_radius, r.prefilter->objects, r.prefilter->unbounded,
-                     r.prefilter->kept);
+    s += format_text("  prefilter (perigee/apogee, then orbit path, against the primary): %ld and %ld of %ld "
+                     "objects set aside, %ld kept without a radius bound, %ld propagated\n",
+                     r.prefilter->removed_radius, r.prefilter->removed_path, r.prefilter->objects,
+                     r.prefilter->unbounded, r.prefilter->kept);
   if (r.time_filter)
     s += format_text("  time filter: %ld of %ld objects never within the threshold, %ld screened in %ld windows "
                      "(%.0f s in all; %ld over the whole span)\n",

@@ -28,23 +28,11 @@
 #include <cmath>
 
 #include "evade/sgp4/sgp4.hpp"
+#include "interval.hpp"
 
 namespace evade::sgp4 {
-namespace {
-
-struct Range {
-  double lo, hi;
-};
-
-// The range of c t^k over t in [t0, t1] (t0 <= t1).
-Range monomial(double c, int k, double t0, double t1) {
-  const double a = std::pow(t0, k), b = std::pow(t1, k);
-  double lo = std::min(a, b), hi = std::max(a, b);
-  if (k % 2 == 0 && t0 < 0.0 && t1 > 0.0) lo = 0.0;
-  return c >= 0.0 ? Range{c * lo, c * hi} : Range{c * hi, c * lo};
-}
-
-}  // namespace
+using detail::monomial;
+using detail::Range;
 
 RadiusBounds Sgp4Propagator::radius_bounds(double t0_min, double t1_min) const noexcept {
   RadiusBounds b;

@@ -59,7 +59,7 @@ TEST(PrimaryPrefilter, ShippedCatalogSameEventsFewerObjects) {
     ASSERT_TRUE(with.prefilter);
     const PrimaryPrefilterCounts& c = *with.prefilter;
     EXPECT_EQ(c.objects, 1200);
-    EXPECT_EQ(c.kept + c.removed_radius, c.objects);
+    EXPECT_EQ(c.kept + c.removed_radius + c.removed_path, c.objects);
     EXPECT_EQ(with.objects, c.kept);
     if (c.primary_bounded) {
       EXPECT_GT(c.removed_radius, 200) << primary;  // a LEO primary

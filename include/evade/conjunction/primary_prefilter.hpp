@@ -41,6 +41,8 @@ struct PrimaryPrefilterCounts {
   long unbounded = 0;       ///< kept: no radius bound over the span (an SGP4 error)
   long sampled = 0;         ///< deep space: bound from samples (see above)
   long removed_radius = 0;  ///< set aside: radius ranges never within D of the primary's
+  long removed_path = 0;    ///< set aside by the orbit-path filter (primary_path_filter.hpp)
+  long path_tests = 0;      ///< pieces of the span the orbit-path filter tested
   long kept = 0;            ///< to be propagated and screened (the primary included)
   bool primary_bounded = false;
 };
@@ -51,11 +53,13 @@ sgp4::RadiusBounds sampled_radius_bounds(const sgp4::Sgp4Propagator& p, double t
 
 /// The primary (first element set with primary_norad) and the objects that may come within
 /// threshold_m of it over [start, start + span_s] (start: UTC s since J2000), in catalog
-/// order. When no element set has primary_norad every element set is kept (the screen then
+/// order: those the perigee/apogee filter keeps, less those the orbit-path filter
+/// (primary_path_filter.hpp; skipped when path_filter is false) sets aside. When no element set has primary_norad every element set is kept (the screen then
 /// names the missing primary). The objects' bounds are computed on `threads` threads (>= 1).
 std::vector<sgp4::MeanElements> prefilter_primary(const std::vector<sgp4::MeanElements>& all,
                                                   long primary_norad, double start_j2000_s,
                                                   double span_s, double threshold_m,
-                                                  PrimaryPrefilterCounts* counts, int threads = 1);
+                                                  PrimaryPrefilterCounts* counts, int threads = 1,
+                                                  bool path_filter = true);
 
 }  // namespace evade::conjunction

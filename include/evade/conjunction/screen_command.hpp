@@ -120,6 +120,9 @@ struct ScreenCatalogRequest {
   /// With a primary: set aside the objects that can never come within threshold_m of it
   /// before propagating (primary_prefilter.hpp); false screens every object.
   bool prefilter = true;
+  /// With a primary and the prefilter: the orbit-path filter after the perigee/apogee one
+  /// (primary_path_filter.hpp); false keeps every object the perigee/apogee filter keeps.
+  bool path_filter = true;
   /// With a primary and the prefilter: screen each object only inside the time filter's
   /// windows (primary_window_screen.hpp; in this process, not with robust_screener); false
   /// screens the prefilter's objects over the whole span.

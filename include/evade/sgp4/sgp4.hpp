@@ -56,6 +56,30 @@ struct RadiusBounds {
   double max_m = 0.0;     ///< |r| <= max_m [m]
 };
 
+/// Bounds of the SGP4 path over an interval of time (near-Earth; path_bounds.cpp gives the
+/// argument): the position is |r| (cos su N + sin su M), N = (cos node, sin node, 0),
+/// M = (-sin node cos incl, cos node cos incl, sin incl), with node and incl in the ranges
+/// below at every instant; |r| as a function of su is bounded by path_radius_in_arc.
+struct PathBounds {
+  bool bounded = false;           ///< false: no bound (deep space, or drag ending the orbit)
+  double node_lo_rad = 0.0;       ///< node of the position (short-period terms included),
+  double node_hi_rad = 0.0;       ///< unwrapped [rad]
+  double incl_lo_rad = 0.0;       ///< inclination of the position [rad]
+  double incl_hi_rad = 0.0;
+  double du_rad = 0.0;            ///< |su - u| (u: the Lyddane argument of latitude) [rad]
+  double am_lo = 0.0, am_hi = 0.0;        ///< mean semi-major axis [Earth radii]
+  double em_lo = 0.0, em_hi = 0.0;        ///< mean eccentricity (after drag, clamped)
+  double argp_lo_rad = 0.0, argp_hi_rad = 0.0;  ///< argument of perigee, unwrapped [rad]
+  double y_lo = 0.0, y_hi = 0.0;  ///< aycof / (am (1 - em^2)) (long-period, J3)
+  double con41 = 0.0, x1mth2 = 0.0;  ///< 3 cos^2 i - 1, 1 - cos^2 i (epoch inclination)
+  double j2 = 0.0, re_m = 0.0;    ///< the theory's J2 and Earth radius [m]
+  RadiusBounds radius;            ///< radius_bounds of the same interval
+};
+
+/// Bounds of |r| at every instant of the interval of b at which the position's argument of
+/// latitude su lies in [s_lo_rad, s_hi_rad] (s_lo <= s_hi; any real values).
+RadiusBounds path_radius_in_arc(const PathBounds& b, double s_lo_rad, double s_hi_rad) noexcept;
+
 /// Converts catalog mean elements (degrees, rev/day) to the theory's units.
 Sgp4Elements sgp4_elements(const MeanElements& m) noexcept;
 
@@ -148,6 +172,9 @@ class Sgp4Propagator {
   /// theory's own formulas (radius_bounds.cpp gives the argument); near-Earth only: a
   /// deep-space element set, an init error or drag taking tempa to 0 gives bounded = false.
   RadiusBounds radius_bounds(double t0_min, double t1_min) const noexcept;
+  /// Bounds of the path for every tsince in [t0_min, t1_min] (path_bounds.cpp); near-Earth
+  /// only, bounded = false where radius_bounds has no bound.
+  PathBounds path_bounds(double t0_min, double t1_min) const noexcept;
 
  private:
   friend class Sgp4X4Lanes;
