@@ -38,7 +38,8 @@ std::string unescape(const std::string& s, int line) {
   return out;
 }
 
-std::string trim(const std::string& s) {
+// Leading and trailing blanks and line ends of XML text.
+std::string trim_xml(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r\n");
   if (a == std::string::npos) return "";
   return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
@@ -125,7 +126,7 @@ class Parser {
         skip_ws();
         if (!starts(">")) xml_fail(line_, n.name, "expected '>'");
         advance(1);
-        n.text = unescape(trim(n.text), n.line);
+        n.text = unescape(trim_xml(n.text), n.line);
         return;
       }
       if (starts("<")) { n.children.push_back(element()); continue; }

@@ -207,7 +207,7 @@ EncounterWindow coppola_window(const StateEci& obj1, const Mat6& cov1_eci,
 
 namespace {
 
-struct Panel {
+struct NcPanel {
   double a = 0.0, b = 0.0;
   double nc = 0.0;        // Kronrod estimate of the integral of the rate
   double nc_small = 0.0;  // same for the small-HBR rate
@@ -224,17 +224,17 @@ class TimeIntegral {
   double rate_at(double t_s, double* small_per_s);
   void add_panels(double a, double b, int count);
   void refine();
-  double total(double Panel::*field) const;
+  double total(double NcPanel::*field) const;
   bool budget_left() const { return evaluations_ < opt_.max_rate_evaluations; }
 
   int evaluations_ = 0;
   double peak_ = 0.0, t_peak_ = 0.0;
   double worst_pop_failure_ = 0.0;     // largest rate at a time whose POP did not converge
   double worst_sphere_error_ = 0.0;    // largest error estimate of an unconverged sphere integral
-  std::vector<Panel> panels_;
+  std::vector<NcPanel> panels_;
 
  private:
-  Panel evaluate(double a, double b);
+  NcPanel evaluate(double a, double b);
 
   const nc::ElementPdf& p1_;
   const nc::ElementPdf& p2_;
@@ -255,7 +255,7 @@ double TimeIntegral::rate_at(double t_s, double* small_per_s) {
   return r.rate_per_s;
 }
 
-Panel TimeIntegral::evaluate(double a, double b) {
+NcPanel TimeIntegral::evaluate(double a, double b) {
   const double c = 0.5 * (a + b), h = 0.5 * (b - a);
   double f[15], fs[15];
   for (int k = 0; k < 7; ++k) {
@@ -263,7 +263,7 @@ Panel TimeIntegral::evaluate(double a, double b) {
     f[14 - k] = rate_at(c + h * kGk15Nodes[k], &fs[14 - k]);
   }
   f[7] = rate_at(c, &fs[7]);
-  Panel p{a, b, 0.0, 0.0, 0.0};
+  NcPanel p{a, b, 0.0, 0.0, 0.0};
   double gauss = kG7Weights[3] * f[7];
   for (int k = 0; k < 8; ++k) {
     const double sym = k < 7 ? f[k] + f[14 - k] : f[7];
@@ -289,18 +289,18 @@ void TimeIntegral::add_panels(double a, double b, int count) {
   }
 }
 
-double TimeIntegral::total(double Panel::*field) const {
+double TimeIntegral::total(double NcPanel::*field) const {
   double s = 0.0;
-  for (const Panel& p : panels_) s += p.*field;
+  for (const NcPanel& p : panels_) s += p.*field;
   return s;
 }
 
 void TimeIntegral::refine() {
   while (budget_left()) {
-    const double nc = total(&Panel::nc);
-    if (total(&Panel::err) <= opt_.rel_tol * std::abs(nc) + 1e-300) return;
+    const double nc = total(&NcPanel::nc);
+    if (total(&NcPanel::err) <= opt_.rel_tol * std::abs(nc) + 1e-300) return;
     const auto worst = std::max_element(panels_.begin(), panels_.end(),
-        [](const Panel& x, const Panel& y) { return x.err < y.err; });
+        [](const NcPanel& x, const NcPanel& y) { return x.err < y.err; });
     const double a = worst->a, b = worst->b, m = 0.5 * (a + b);
     panels_.erase(worst);
     panels_.push_back(evaluate(a, m));
@@ -317,13 +317,13 @@ namespace {
 // duration at gamma = 1e-6: 5e-7 on each side).
 constexpr double kSpanTail = 5e-7;
 
-void conjunction_span(std::vector<Panel> panels, double nc, double* ta, double* tb) {
-  std::sort(panels.begin(), panels.end(), [](const Panel& x, const Panel& y) { return x.a < y.a; });
+void conjunction_span(std::vector<NcPanel> panels, double nc, double* ta, double* tb) {
+  std::sort(panels.begin(), panels.end(), [](const NcPanel& x, const NcPanel& y) { return x.a < y.a; });
   *ta = panels.empty() ? 0.0 : panels.front().a;
   *tb = panels.empty() ? 0.0 : panels.back().b;
   double cum = 0.0;
   bool found_a = false;
-  for (const Panel& p : panels) {
+  for (const NcPanel& p : panels) {
     const double next = cum + std::max(0.0, p.nc);
     auto at = [&](double level) {
       return p.a + (p.b - p.a) * (next > cum ? (level - cum) / (next - cum) : 0.0);
@@ -392,7 +392,7 @@ std::string convergence_failure(const TimeIntegral& ti, const Nc3dOptions& opt, 
   if (!ti.budget_left()) {
     return "rate evaluation budget (" + std::to_string(opt.max_rate_evaluations) + ") exhausted";
   }
-  if (ti.total(&Panel::err) > opt.rel_tol * std::abs(nc) + 1e-300) return "time integral did not reach rel_tol";
+  if (ti.total(&NcPanel::err) > opt.rel_tol * std::abs(nc) + 1e-300) return "time integral did not reach rel_tol";
   if (ti.worst_pop_failure_ > cut) return "peak overlap position did not converge where the rate matters";
   // The finest sphere rule may miss sphere_rel_tol where the PDF is much narrower than the
   // sphere; that is acceptable while its error is below rel_tol of the peak rate.
@@ -428,9 +428,9 @@ Nc3dResult pc_3d_nc(const StateEci& obj1, const Mat6& cov1_eci, const StateEci& 
   } else {
     win = default_window(&ti, res.coppola, 0.5 * std::min(res.period1_s, res.period2_s));
   }
-  const double nc = ti.total(&Panel::nc);
+  const double nc = ti.total(&NcPanel::nc);
   res.pc = std::min(1.0, nc);
-  res.pc_small_hbr = ti.total(&Panel::nc_small);
+  res.pc_small_hbr = ti.total(&NcPanel::nc_small);
   res.t_begin_s = win.a;
   res.t_end_s = win.b;
   res.t_peak_s = ti.t_peak_;

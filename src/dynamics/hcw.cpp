@@ -59,6 +59,13 @@ Vec6 hcw_propagate(double n_radps, double t_s, const Vec6& x0_rsw) {
   return x;
 }
 
+Eigen::Matrix<double, 6, 3> hcw_impulse_matrix(double n_radps, double t_s) {
+  const HcwBlocks b = hcw_stm_blocks(n_radps, t_s);
+  Eigen::Matrix<double, 6, 3> m;
+  m << b.rv, b.vv;
+  return m;
+}
+
 Vec6 hcw_impulse_response(double n_radps, double t_s, const Vec3& dv_rsw_mps) {
   const HcwBlocks b = hcw_stm_blocks(n_radps, t_s);
   Vec6 x;

@@ -12,7 +12,7 @@
 namespace evade::formation {
 namespace {
 
-[[noreturn]] void fail(const std::string& field, double v, const std::string& range) {
+[[noreturn]] void fail_decision(const std::string& field, double v, const std::string& range) {
   throw std::invalid_argument(field + " = " + std::to_string(v) + " outside " + range);
 }
 
@@ -56,10 +56,10 @@ ParamTable<ManeuverTiming> maneuver_timing_params() noexcept {
 void ConjunctionSpec::validate() const {
   check_params(conjunction_spec_params(), *this, "conjunction.");
   if (!miss_rsw_m.allFinite() || miss_rsw_m.norm() > 1e5) {
-    fail("conjunction.miss_rsw_m (norm)", miss_rsw_m.norm(), "finite, [0, 1e5] m");
+    fail_decision("conjunction.miss_rsw_m (norm)", miss_rsw_m.norm(), "finite, [0, 1e5] m");
   }
   if (!v_rel_rsw_mps.allFinite() || v_rel_rsw_mps.norm() < 10.0 || v_rel_rsw_mps.norm() > 2e4) {
-    fail("conjunction.v_rel_rsw_mps (norm)", v_rel_rsw_mps.norm(),
+    fail_decision("conjunction.v_rel_rsw_mps (norm)", v_rel_rsw_mps.norm(),
          "finite, [10, 2e4] m/s (a fast encounter: the linear closest approach needs it)");
   }
 }

@@ -32,7 +32,7 @@ bool known_objective(int k) noexcept {
   return k >= static_cast<int>(PlanObjective::kPaper) &&
          k <= static_cast<int>(PlanObjective::kEstimation);
 }
-bool finite3(const double* v) noexcept {
+bool all_finite3(const double* v) noexcept {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
@@ -104,9 +104,9 @@ Verdict impulses_verdict(const evade_burn_plan_t& m) noexcept {
       return {PlanReject::kMalformed, "evade_burn_plan_t.impulse_dv_eci_valid: must be 0 or 1"};
     if (!std::isfinite(m.impulse_t_s[k]))
       return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_t_s: not finite"};
-    if (!finite3(m.impulse_dv_rsw_mps[k]))
+    if (!all_finite3(m.impulse_dv_rsw_mps[k]))
       return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_dv_rsw_mps: not finite"};
-    if (m.impulse_dv_eci_valid[k] == 1 && !finite3(m.impulse_dv_eci_mps[k]))
+    if (m.impulse_dv_eci_valid[k] == 1 && !all_finite3(m.impulse_dv_eci_mps[k]))
       return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_dv_eci_mps: not finite"};
     if (!std::isfinite(m.impulse_dv_mps[k]))
       return {PlanReject::kNotFinite, "evade_burn_plan_t.impulse_dv_mps: not finite"};

@@ -12,12 +12,13 @@
 #include <vector>
 
 #include "evade/sgp4/sgp4.hpp"
+#include "angles.hpp"
 
 namespace evade::sgp4 {
 namespace {
 
-constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
+using detail::kTwoPi;
 constexpr double kZes = 0.01675;       // solar eccentricity
 constexpr double kZel = 0.05490;       // lunar eccentricity
 constexpr double kZns = 1.19459e-5;    // solar mean motion (rad/min)

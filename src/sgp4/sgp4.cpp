@@ -12,6 +12,7 @@
 // are rotated by d here (rotate), and am^1.5 is am sqrt(am): the same numbers within a few
 // roundings (the SGP4-VER figures in docs/ASSESSMENT.md), a quarter of the time.
 #include "evade/sgp4/sgp4.hpp"
+#include "angles.hpp"
 
 #include <cmath>
 #include <limits>
@@ -19,8 +20,8 @@
 namespace evade::sgp4 {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2.0 * kPi;
+using detail::kPi;
+using detail::kTwoPi;
 constexpr double kDeg2Rad = kPi / 180.0;
 constexpr double kX2o3 = 2.0 / 3.0;
 constexpr double kTemp4 = 1.5e-12;  // guard of the 1 / (1 + cos i) in xlcof at i = 180 deg

@@ -7,12 +7,14 @@
 // r_tod = R1(-eps - deps) R3(-dpsi) R1(eps) r_mod. Rotations are frame (passive) rotations.
 #include "evade/sgp4/teme_to_j2000.hpp"
 
+#include "angles.hpp"
+
 #include <cmath>
 
 namespace evade::sgp4 {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 constexpr double kArcsec = kPi / (180.0 * 3600.0);
 constexpr double kDeg = kPi / 180.0;
 

@@ -10,20 +10,13 @@
 
 #include "evade/guidance/plan_executor.hpp"
 #include "evade/sim/actuator_model.hpp"
+#include "evade/sim/internal/thrusted_truth.hpp"
 #include "evade/sim/sim_config.hpp"
 
 namespace evade::sim {
 namespace {
 
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-
-Vec12 pack(const StateEci& a, const StateEci& b) {
-  Vec12 x;
-  x << a.r_eci_m, a.v_eci_mps, b.r_eci_m, b.v_eci_mps;
-  return x;
-}
-StateEci first(const Vec12& x) { return {x.segment<3>(0), x.segment<3>(3)}; }
-StateEci second(const Vec12& x) { return {x.segment<3>(6), x.segment<3>(9)}; }
+// The two-body state vector: pack, sat_of, deb_of (internal/thrusted_truth.hpp).
 
 void check(const PlanRunConfig& cfg) {
   if (!(cfg.rate_hz > 0.0 && cfg.rate_hz <= 1000.0))
@@ -65,8 +58,8 @@ class PlanLoop {
     }
     close_burn(1e-6 * static_cast<double>(n * cycle_us_));
     record(1e-6 * static_cast<double>(n * cycle_us_), true);
-    res_.satellite_end = first(x_);
-    res_.other_end = second(x_);
+    res_.satellite_end = sat_of(x_);
+    res_.other_end = deb_of(x_);
     res_.has_final_status = g_.status(&res_.final_status);
     return res_;
   }
@@ -95,7 +88,7 @@ class PlanLoop {
         burn_.t_start_s = t;
         states_.clear();
       }
-      states_.push_back(first(x_));
+      states_.push_back(sat_of(x_));
     } else {
       close_burn(t);
     }
@@ -106,7 +99,7 @@ class PlanLoop {
     const std::vector<double>& want = cfg_.sample_t_s;
     while (res_.samples.size() < want.size() &&
            (end || want[res_.samples.size()] <= t_s + 1e-9))
-      res_.samples.push_back({t_s, first(x_), second(x_)});
+      res_.samples.push_back({t_s, sat_of(x_), deb_of(x_)});
   }
 
   void close_burn(double t_s) {
@@ -199,8 +192,8 @@ void propagate_unforced(const PlanRunConfig& cfg, double t_s, StateEci* satellit
   integ.reset(0.0, pack(cfg.satellite0, cfg.other0));
   while (integ.t_s() != t_s)
     if (!integ.step(t_s)) throw std::runtime_error("plan run: " + integ.failure_reason());
-  *satellite = first(integ.x());
-  *other = second(integ.x());
+  *satellite = sat_of(integ.x());
+  *other = deb_of(integ.x());
 }
 
 std::unique_ptr<GuidanceEndpoint> make_in_process_plan_endpoint(

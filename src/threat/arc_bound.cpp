@@ -16,13 +16,6 @@ namespace {
 
 using Mat63 = Eigen::Matrix<double, 6, 3>;
 
-Mat63 impulse_matrix(double n, double t) {
-  const HcwBlocks b = hcw_stm_blocks(n, t);
-  Mat63 m;
-  m << b.rv, b.vv;
-  return m;
-}
-
 double spectral_norm(const Mat3& m) {
   const Eigen::SelfAdjointEigenSolver<Mat3> es(m.transpose() * m, Eigen::EigenvaluesOnly);
   return std::sqrt(std::max(0.0, es.eigenvalues().maxCoeff())) * (1.0 + 1e-12);
@@ -52,14 +45,14 @@ ArcBound::ArcBound(const ThreatAreaSolver& solver) : solver_(solver) {
     const double t = static_cast<double>(i) * o.step_s;
     t_.push_back(t);
     w_.push_back(solver.required_change(t, Vec3::Zero()));
-    b_.push_back(impulse_matrix(n, t + o.transfer_s));
+    b_.push_back(hcw_impulse_matrix(n, t + o.transfer_s));
     maps_.push_back(maps_at(t));
   }
 }
 
 ArcBound::Maps ArcBound::maps_at(double t_s) const {
   const HcwTransfer& tr = solver_.transfer();
-  const Mat63 b = impulse_matrix(solver_.geometry().n_radps, t_s + solver_.options().transfer_s);
+  const Mat63 b = hcw_impulse_matrix(solver_.geometry().n_radps, t_s + solver_.options().transfer_s);
   Maps m;
   m.m1 = tr.phi_rv_T_inv() * b.topRows<3>();
   m.m2 = b.bottomRows<3>() - tr.phi_vv_T() * m.m1;

@@ -23,13 +23,6 @@ void require(bool ok, const std::string& field, double value, const std::string&
   }
 }
 
-Eigen::Matrix<double, 6, 3> impulse_matrix(double n, double t) {
-  const HcwBlocks b = hcw_stm_blocks(n, t);
-  Eigen::Matrix<double, 6, 3> m;
-  m << b.rv, b.vv;
-  return m;
-}
-
 // Runs body(part) for part = 0..parts-1, parts 1.. on their own threads and part 0 on the
 // caller's; rethrows the first exception (in part order) after all have finished.
 template <class Body>
@@ -93,7 +86,7 @@ ThreatAreaSolver::ThreatAreaSolver(const ThreatGeometry& geom, const ThreatOptio
     const double t = static_cast<double>(i) * opt_.step_s;
     t_grid_.push_back(t);
     w_grid_.push_back(hcw_propagate(geom_.n_radps, t + opt_.transfer_s, rel0));
-    b_grid_.push_back(impulse_matrix(geom_.n_radps, t + opt_.transfer_s));
+    b_grid_.push_back(hcw_impulse_matrix(geom_.n_radps, t + opt_.transfer_s));
   }
 }
 
@@ -102,7 +95,7 @@ double ThreatAreaSolver::period_s() const { return kTwoPi / geom_.n_radps; }
 Vec6 ThreatAreaSolver::required_change(double t_s, const Vec3& evasion_dv_rsw_mps) const {
   const double tf = t_s + opt_.transfer_s;
   return hcw_propagate(geom_.n_radps, tf, geom_.target0_rsw - geom_.chaser0_rsw) +
-         impulse_matrix(geom_.n_radps, tf) * evasion_dv_rsw_mps;
+         hcw_impulse_matrix(geom_.n_radps, tf) * evasion_dv_rsw_mps;
 }
 
 RendezvousPlan ThreatAreaSolver::min_cost_plan(double t_s, const Vec3& evasion_dv_rsw_mps) const {

@@ -24,6 +24,8 @@ HcwBlocks hcw_stm_blocks(double n_radps, double t_s);
 Mat6 hcw_stm(double n_radps, double t_s);
 /// x(t) = Phi(t) x0.
 Vec6 hcw_propagate(double n_radps, double t_s, const Vec6& x0_rsw);
+/// [Phi_rv; Phi_vv]: the 6x3 map from an impulse applied at time 0 to the state change at t.
+Eigen::Matrix<double, 6, 3> hcw_impulse_matrix(double n_radps, double t_s);
 /// State change at t caused by an impulse dv applied at time 0: [Phi_rv; Phi_vv] dv.
 Vec6 hcw_impulse_response(double n_radps, double t_s, const Vec3& dv_rsw_mps);
 /// Right-hand side of the linear HCW equations (for numerical checks).

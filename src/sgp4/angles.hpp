@@ -1,0 +1,9 @@
+// pi and 2 pi for the SGP4 sources (one declaration for every file of the library).
+#pragma once
+
+namespace evade::sgp4::detail {
+
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kTwoPi = 2.0 * kPi;
+
+}  // namespace evade::sgp4::detail
