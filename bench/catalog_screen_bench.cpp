@@ -8,6 +8,8 @@
 //   BM_Sgp4State         : one SGP4 state (position and SGP4's velocity) of every object of
 //                          the catalog at 100 instants over a day; arg 0: the near-Earth
 //                          objects (SGP4), 1: the deep-space ones (SDP4). Time per state.
+//   BM_PathPieceTest     : one test of the orbit-path filter (a piece of 1,800 s, the primary
+//                          90000 against each near-Earth object; primary_path_filter.hpp);
 //   BM_Sgp4StateX4       : the states of BM_Sgp4State(arg), four at a time as the screening
 //                          computes them (sgp4::Sgp4X4Lanes gathered once per group, then
 //                          sgp4::propagate_x4; AVX2 where the processor has it).
@@ -16,12 +18,14 @@
 // Results and machine: docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "evade/conjunction/primary_path_filter.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/sgp4_motion.hpp"
 #include "evade/sgp4/sgp4.hpp"
@@ -83,6 +87,37 @@ void BM_Sgp4State(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(states) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_Sgp4State)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// One test of the orbit-path filter (conjunction::path_piece_clear with the two bodies'
+// sgp4::Sgp4Propagator::path_bounds over a 1,800 s piece): the primary 90000 against every
+// other near-Earth object of the catalog, 24 pieces over a day. Time per test; the counter
+// `cleared` is the fraction of tests that clear their piece at D = 5 km.
+void BM_PathPieceTest(benchmark::State& state) {
+  sgp4::Catalog cat;
+  if (!read_catalog(state, cat)) return;
+  std::vector<sgp4::Sgp4Propagator> props;
+  for (const auto& m : cat.objects) {
+    sgp4::Sgp4Propagator p(m);
+    if (p.init_error() == sgp4::Sgp4Error::kNone && !p.deep_space()) props.push_back(p);
+  }
+  const sgp4::Sgp4Propagator& primary = props.front();
+  long tests = 0, cleared = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < 24; ++k) {
+      const double t0_min = 30.0 * k, t1_min = t0_min + 30.0;
+      const sgp4::PathBounds bp = primary.path_bounds(t0_min, t1_min);
+      for (std::size_t j = 1; j < props.size(); ++j) {
+        const bool clear = path_piece_clear(bp, props[j].path_bounds(t0_min, t1_min), 5000.0);
+        cleared += clear ? 1 : 0;
+      }
+    }
+    tests += 24 * static_cast<long>(props.size() - 1);
+  }
+  state.counters["cleared"] = static_cast<double>(cleared) / static_cast<double>(std::max(tests, 1L));
+  state.counters["ns_per_test"] =
+      benchmark::Counter(static_cast<double>(tests) * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PathPieceTest)->Unit(benchmark::kMillisecond);
 
 // The states of BM_Sgp4State(arg), four objects at a time as the screening computes them:
 // each group's constants gathered once (sgp4::Sgp4X4Lanes), then sgp4::propagate_x4 at every
