@@ -10,6 +10,7 @@
 #include "uplink_options.hpp"
 
 namespace {
+namespace cmd_arm {  // a name of its own: the CLI builds as unity batches too
 
 struct ArmOptions {
   bool arm = false;
@@ -36,4 +37,5 @@ evade::cli::Runner setup(CLI::App& app) {
 const bool kRegistered = evade::cli::register_command(
     {{"arm", nullptr}, "Arm or disarm the guidance node with a signed command", &setup});
 
+}  // namespace cmd_arm
 }  // namespace

@@ -25,6 +25,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_assess {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::assessment;
 
@@ -103,5 +104,6 @@ const bool kRegistered = register_command(
      "recommended Pc and its method)",
      &setup});
 
+}  // namespace cmd_assess
 }  // namespace
 }  // namespace evade::cli

@@ -11,6 +11,7 @@
 #include "uplink_options.hpp"
 
 namespace {
+namespace cmd_key {  // a name of its own: the CLI builds as unity batches too
 
 struct KeyOptions {
   int activate = 0;
@@ -44,4 +45,5 @@ evade::cli::Runner setup(CLI::App& app) {
 const bool kRegistered = evade::cli::register_command(
     {{"key", nullptr}, "Activate or retire a node key with a signed command (docs/SECURITY.md)", &setup});
 
+}  // namespace cmd_key
 }  // namespace

@@ -10,6 +10,7 @@
 #include "evade/auth/key_file.hpp"
 
 namespace {
+namespace cmd_keygen {  // a name of its own: the CLI builds as unity batches too
 
 struct KeygenOptions {
   std::string out;
@@ -49,4 +50,5 @@ evade::cli::Runner setup(CLI::App& app) {
 const bool kRegistered = evade::cli::register_command(
     {{"keygen", nullptr}, "Generate a command or sensor key file (docs/SECURITY.md)", &setup});
 
+}  // namespace cmd_keygen
 }  // namespace

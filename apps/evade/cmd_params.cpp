@@ -24,6 +24,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_params {  // a name of its own: the CLI builds as unity batches too
 
 template <class Cfg>
 std::string section(const char* title, const char* readers, const std::string& prefix,
@@ -106,5 +107,6 @@ Runner setup(CLI::App&) {
 const bool kRegistered = register_command(
     {{"params"}, "Every declared parameter as Markdown (docs/PARAMETERS.md)", &setup});
 
+}  // namespace cmd_params
 }  // namespace
 }  // namespace evade::cli

@@ -24,6 +24,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_plan_cam {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::assessment;
 
@@ -106,5 +107,6 @@ Runner setup(CLI::App& app) {
 const bool kRegistered = register_command(
     {{"plan", "cam"}, "Minimum-dv collision-avoidance burn for a Pc threshold", &setup});
 
+}  // namespace cmd_plan_cam
 }  // namespace
 }  // namespace evade::cli

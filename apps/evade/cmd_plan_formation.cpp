@@ -19,6 +19,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_plan_formation {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::formation;
 
@@ -54,5 +55,6 @@ const bool kRegistered = register_command(
      "Formation collision avoidance by a small semi-major-axis change (paper 003)",
      &setup});
 
+}  // namespace cmd_plan_formation
 }  // namespace
 }  // namespace evade::cli

@@ -16,6 +16,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_plan_observability {  // a name of its own: the CLI builds as unity batches too
 
 struct Options {
   CommonOptions common;
@@ -58,5 +59,6 @@ Runner setup(CLI::App& app) {
 const bool kRegistered = register_command(
     {{"plan", "observability"}, "Observability-minimizing evasive burn (paper 004)", &setup});
 
+}  // namespace cmd_plan_observability
 }  // namespace
 }  // namespace evade::cli

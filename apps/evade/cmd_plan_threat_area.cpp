@@ -26,6 +26,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_plan_threat_area {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::threat;
 
@@ -139,5 +140,6 @@ const bool kRegistered = register_command(
      "eliminating burn",
      &setup});
 
+}  // namespace cmd_plan_threat_area
 }  // namespace
 }  // namespace evade::cli

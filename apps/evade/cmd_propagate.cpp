@@ -13,6 +13,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_propagate {  // a name of its own: the CLI builds as unity batches too
 
 struct CatalogFlags {
   std::string tle_path;  ///< --tle: TLE or 3LE text
@@ -92,5 +93,6 @@ const bool kRegistered = register_command(
      "Propagate one orbit (two-body or two-body + J2): the foundation demo",
      &setup});
 
+}  // namespace cmd_propagate
 }  // namespace
 }  // namespace evade::cli

@@ -31,6 +31,7 @@
 
 namespace evade::cli {
 namespace {
+namespace cmd_screen {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::conjunction;
 
@@ -202,5 +203,6 @@ const bool kRegistered = register_command(
      "Conjunction screening among many objects (paper 002; adaptive or robust)",
      &setup});
 
+}  // namespace cmd_screen
 }  // namespace
 }  // namespace evade::cli

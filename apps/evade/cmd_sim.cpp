@@ -39,6 +39,7 @@
 #include "evade/sim/sim_plan_command.hpp"
 
 namespace {
+namespace cmd_sim {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade;
 
@@ -270,4 +271,5 @@ evade::cli::Runner setup(CLI::App& app) {
 const bool kRegistered = evade::cli::register_command(
     {{"sim"}, "Closed-loop close-range evasion simulation (paper 000)", &setup});
 
+}  // namespace cmd_sim
 }  // namespace
