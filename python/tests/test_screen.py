@@ -45,36 +45,41 @@ def test_catalog_primary_equals_cli(repo, cli_json):
     assert len(pd.DataFrame(ev)) == len(doc["events"])
 
 
-def test_catalog_primary_without_time_filter_equals_cli_and_the_filtered_events(repo, cli_json):
-    args = ["screen", "--tle", str(repo / CATALOG), "--primary", "90000", "--span-s", "86400",
+# One satellite (90000) against the shipped catalog for a day at 50 km, as the CLI's flags
+# and as evade.screen's arguments; an approach's key for comparing two screens' events.
+PRIMARY = dict(primary=90000, span_s=86400, threshold_m=50000, threads=2)
+
+
+def primary_cli_args(repo):
+    return ["screen", "--tle", str(repo / CATALOG), "--primary", "90000", "--span-s", "86400",
             "--threshold-m", "50000", "--threads", "2", "--quiet"]
-    whole = cli_json(args + ["--no-time-filter"])
-    r = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=86400, threshold_m=50000,
-                     threads=2, time_filter=False)
+
+
+def event_keys(doc):
+    return [(e["norad_j"], round(e["tca_s"], 3), round(e["miss_m"], 2)) for e in doc["events"]]
+
+
+def test_catalog_primary_without_time_filter_equals_cli_and_the_filtered_events(repo, cli_json):
+    whole = cli_json(primary_cli_args(repo) + ["--no-time-filter"])
+    r = evade.screen(catalog=repo / CATALOG, time_filter=False, **PRIMARY)
     assert without_wall_times(r.to_dict()) == without_wall_times(whole)
     assert "time_filter" not in whole
-    windows = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=86400, threshold_m=50000,
-                           threads=2).to_dict()
+    windows = evade.screen(catalog=repo / CATALOG, **PRIMARY).to_dict()
     assert windows["time_filter"]["removed"] > 0
-    key = lambda e: (e["norad_j"], round(e["tca_s"], 3), round(e["miss_m"], 2))
-    assert [key(e) for e in windows["events"]] == [key(e) for e in whole["events"]]
+    assert event_keys(windows) == event_keys(whole)
     assert len(whole["events"]) > 0
 
 
 def test_catalog_primary_without_path_filter_equals_cli_and_the_same_events(repo, cli_json):
-    args = ["screen", "--tle", str(repo / CATALOG), "--primary", "90000", "--span-s", "86400",
-            "--threshold-m", "50000", "--threads", "2", "--quiet"]
-    unfiltered = cli_json(args + ["--no-path-filter"])
-    r = evade.screen(catalog=repo / CATALOG, primary=90000, span_s=86400, threshold_m=50000,
-                     threads=2, path_filter=False)
+    unfiltered = cli_json(primary_cli_args(repo) + ["--no-path-filter"])
+    r = evade.screen(catalog=repo / CATALOG, path_filter=False, **PRIMARY)
     assert without_wall_times(r.to_dict()) == without_wall_times(unfiltered)
     assert unfiltered["prefilter"]["removed_orbit_path"] == 0
-    filtered = cli_json(args)
+    filtered = cli_json(primary_cli_args(repo))
     assert filtered["prefilter"]["removed_orbit_path"] > 0
     assert (filtered["prefilter"]["propagated"] + filtered["prefilter"]["removed_orbit_path"]
             == unfiltered["prefilter"]["propagated"])
-    key = lambda e: (e["norad_j"], round(e["tca_s"], 3), round(e["miss_m"], 2))
-    assert [key(e) for e in filtered["events"]] == [key(e) for e in unfiltered["events"]]
+    assert event_keys(filtered) == event_keys(unfiltered)
     assert len(filtered["events"]) > 0
 
 

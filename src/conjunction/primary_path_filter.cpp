@@ -14,25 +14,6 @@ namespace {
 
 constexpr double kPi = 3.141592653589793;
 
-// A body's centre plane over a piece: node and in-plane unit vectors, normal, and eps (the
-// largest move of the normal or of a direction away from the centre).
-struct CentrePlane {
-  Eigen::Vector3d n, m, w;
-  double eps = 0.0;
-};
-
-CentrePlane centre_plane(const sgp4::PathBounds& b) {
-  const double node = 0.5 * (b.node_lo_rad + b.node_hi_rad);
-  const double incl = 0.5 * (b.incl_lo_rad + b.incl_hi_rad);
-  const double so = std::sin(node), co = std::cos(node), si = std::sin(incl), ci = std::cos(incl);
-  CentrePlane c;
-  c.n = {co, so, 0.0};
-  c.m = {-so * ci, co * ci, si};
-  c.w = {so * si, -co * si, ci};
-  c.eps = 0.5 * (b.node_hi_rad - b.node_lo_rad) + 0.5 * (b.incl_hi_rad - b.incl_lo_rad);
-  return c;
-}
-
 // The angle a chord of length eps subtends on the unit sphere (pi when eps >= 2).
 double chord_angle(double eps) { return 2.0 * std::asin(std::min(1.0, 0.5 * eps)); }
 
@@ -48,10 +29,22 @@ bool side_apart(const sgp4::PathBounds& p, double s0_p, double a_p, const sgp4::
 
 }  // namespace
 
+PathCentrePlane path_centre_plane(const sgp4::PathBounds& b) noexcept {
+  const double node = 0.5 * (b.node_lo_rad + b.node_hi_rad);
+  const double incl = 0.5 * (b.incl_lo_rad + b.incl_hi_rad);
+  const double so = std::sin(node), co = std::cos(node), si = std::sin(incl), ci = std::cos(incl);
+  PathCentrePlane c;
+  c.n = {co, so, 0.0};
+  c.m = {-so * ci, co * ci, si};
+  c.w = {so * si, -co * si, ci};
+  c.eps = 0.5 * (b.node_hi_rad - b.node_lo_rad) + 0.5 * (b.incl_hi_rad - b.incl_lo_rad);
+  return c;
+}
+
 bool path_piece_clear(const sgp4::PathBounds& p, const sgp4::PathBounds& j,
                       double threshold_m) noexcept {
   if (!p.bounded || !j.bounded || !(p.radius.min_m > 0.0) || !(j.radius.min_m > 0.0)) return false;
-  const CentrePlane cp = centre_plane(p), cj = centre_plane(j);
+  const PathCentrePlane cp = path_centre_plane(p), cj = path_centre_plane(j);
   const Eigen::Vector3d cross = cp.w.cross(cj.w);
   const double r = cross.norm();
   const double d = threshold_m;

@@ -43,18 +43,11 @@ PathBounds Sgp4Propagator::path_bounds(double t0_min, double t1_min) const noexc
   PathBounds b;
   b.radius = radius_bounds(t0_min, t1_min);
   if (!b.radius.bounded) return b;  // also deep space, init errors and t0 > t1
-  Range tempa{1.0, 1.0};
-  const double coef[4] = {cc1_, isimp_ ? 0.0 : d2_, isimp_ ? 0.0 : d3_, isimp_ ? 0.0 : d4_};
-  for (int k = 1; k <= 4; ++k) {
-    const Range m = monomial(coef[k - 1], k, t0_min, t1_min);
-    tempa = {tempa.lo - m.hi, tempa.hi - m.lo};
-  }
-  b.am_lo = am_near_ * tempa.lo * tempa.lo;
-  b.am_hi = am_near_ * tempa.hi * tempa.hi;
-  const Range drag = monomial(el_.bstar_per_er * cc4_, 1, t0_min, t1_min);
-  const double periodic = isimp_ ? 0.0 : 2.0 * std::abs(el_.bstar_per_er * cc5_);
-  b.em_lo = std::max(1e-6, el_.ecco - drag.hi - periodic);
-  b.em_hi = std::max(1e-6, el_.ecco - drag.lo + periodic);
+  const MeanRanges mr = mean_ranges(t0_min, t1_min);  // ok: radius_bounds' own call held
+  b.am_lo = mr.am_lo;
+  b.am_hi = mr.am_hi;
+  b.em_lo = std::max(1e-6, mr.em_lo);  // the theory's clamp
+  b.em_hi = std::max(1e-6, mr.em_hi);
   Range argp = add({el_.argpo_rad, el_.argpo_rad},
                    monomial(ep_.argpdot - (isimp_ ? 0.0 : omgcof_), 1, t0_min, t1_min));
   if (!isimp_) {

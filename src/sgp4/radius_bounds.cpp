@@ -34,22 +34,32 @@ namespace evade::sgp4 {
 using detail::monomial;
 using detail::Range;
 
-RadiusBounds Sgp4Propagator::radius_bounds(double t0_min, double t1_min) const noexcept {
-  RadiusBounds b;
-  if (deep_ || init_error_ != Sgp4Error::kNone || !(t0_min <= t1_min)) return b;
+Sgp4Propagator::MeanRanges Sgp4Propagator::mean_ranges(double t0_min, double t1_min) const noexcept {
+  MeanRanges r;
   Range tempa{1.0, 1.0};
   const double coef[4] = {cc1_, isimp_ ? 0.0 : d2_, isimp_ ? 0.0 : d3_, isimp_ ? 0.0 : d4_};
   for (int k = 1; k <= 4; ++k) {
     const Range m = monomial(coef[k - 1], k, t0_min, t1_min);
     tempa = {tempa.lo - m.hi, tempa.hi - m.lo};
   }
-  if (!(tempa.lo > 0.0) || !(no_unkozai_ > 0.0)) return b;
-  const double a0 = std::pow(k_.xke_per_min / no_unkozai_, 2.0 / 3.0);
-  const Range am{a0 * tempa.lo * tempa.lo, a0 * tempa.hi * tempa.hi};
+  if (!(tempa.lo > 0.0) || !(no_unkozai_ > 0.0)) return r;
+  r.am_lo = am_near_ * tempa.lo * tempa.lo;  // am_near_ = (xke / no)^(2/3)
+  r.am_hi = am_near_ * tempa.hi * tempa.hi;
   const Range drag = monomial(el_.bstar_per_er * cc4_, 1, t0_min, t1_min);
   const double periodic = isimp_ ? 0.0 : 2.0 * std::abs(el_.bstar_per_er * cc5_);
-  const double em_max = std::max({std::abs(el_.ecco - drag.lo + periodic),
-                                  std::abs(el_.ecco - drag.hi - periodic), 1e-6});
+  r.em_lo = el_.ecco - drag.hi - periodic;
+  r.em_hi = el_.ecco - drag.lo + periodic;
+  r.ok = true;
+  return r;
+}
+
+RadiusBounds Sgp4Propagator::radius_bounds(double t0_min, double t1_min) const noexcept {
+  RadiusBounds b;
+  if (deep_ || init_error_ != Sgp4Error::kNone || !(t0_min <= t1_min)) return b;
+  const MeanRanges mr = mean_ranges(t0_min, t1_min);
+  if (!mr.ok) return b;
+  const Range am{mr.am_lo, mr.am_hi};
+  const double em_max = std::max({std::abs(mr.em_lo), std::abs(mr.em_hi), 1e-6});
   if (!(em_max < 1.0)) return b;
   const double el_max = em_max + std::abs(near_.aycof) / (am.lo * (1.0 - em_max * em_max));
   const double pl_lo = am.lo * (1.0 - el_max * el_max);

@@ -28,21 +28,6 @@
 namespace evade::conjunction {
 namespace {
 
-struct Centre {
-  Eigen::Vector3d n, m, w;
-  double eps;
-};
-
-Centre centre(const sgp4::PathBounds& b) {
-  const double node = 0.5 * (b.node_lo_rad + b.node_hi_rad), incl = 0.5 * (b.incl_lo_rad + b.incl_hi_rad);
-  Centre c;
-  c.n = {std::cos(node), std::sin(node), 0.0};
-  c.m = {-std::sin(node) * std::cos(incl), std::cos(node) * std::cos(incl), std::sin(incl)};
-  c.w = {std::sin(node) * std::sin(incl), -std::cos(node) * std::sin(incl), std::cos(incl)};
-  c.eps = 0.5 * (b.node_hi_rad - b.node_lo_rad) + 0.5 * (b.incl_hi_rad - b.incl_lo_rad);
-  return c;
-}
-
 TEST(PathBounds, PlaneAndRadiusAgainstDirectionHoldOnTheShippedCatalogOverSevenDays) {
   const sgp4::Catalog cat = testing::shipped_catalog();
   long objects = 0, states = 0;
@@ -56,7 +41,7 @@ TEST(PathBounds, PlaneAndRadiusAgainstDirectionHoldOnTheShippedCatalogOverSevenD
       const double t0_s = day * 86400.0 + 3600.0 * (objects % 11), t1_s = t0_s + 7200.0;
       const sgp4::PathBounds b = p.path_bounds(t0_s / 60.0, t1_s / 60.0);
       ASSERT_TRUE(b.bounded) << m.norad_id;
-      const Centre c = centre(b);
+      const PathCentrePlane c = path_centre_plane(b);
       const double w = std::asin(std::min(1.0, c.eps)) * (1.0 + 1e-9) + 1e-12;
       for (double t = t0_s; t <= t1_s; t += 30.0) {
         const sgp4::Sgp4State s = p.propagate_s(t);

@@ -32,6 +32,8 @@
 // or the side condition failing: kept. Checked against SGP4 in primary_path_filter_test.cpp.
 #pragma once
 
+#include <Eigen/Core>
+
 #include "evade/sgp4/sgp4.hpp"
 
 namespace evade::conjunction {
@@ -40,6 +42,16 @@ namespace evade::conjunction {
 constexpr double kPathFilterMinPieceS = 1800.0;
 /// Most tests of one object (then it is kept: the time filter follows it instead).
 constexpr long kPathFilterMaxTests = 64;
+
+/// A body's centre plane over a piece (the middles of its node and inclination ranges): node
+/// and in-plane unit vectors n and m (a direction at argument of latitude s is
+/// cos s n + sin s m), normal w, and eps (half the node range + half the inclination range:
+/// the most the true normal or a direction moves away from the centre's).
+struct PathCentrePlane {
+  Eigen::Vector3d n, m, w;
+  double eps = 0.0;
+};
+PathCentrePlane path_centre_plane(const sgp4::PathBounds& b) noexcept;
 
 /// What the test of one object found.
 struct PathFilterResult {

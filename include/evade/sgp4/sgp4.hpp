@@ -184,6 +184,14 @@ class Sgp4Propagator {
   struct Short {
     double con41, x1mth2, x7thm1, aycof, xlcof;
   };
+  // The ranges of the mean semi-major axis am [Earth radii] and of the mean eccentricity
+  // before the theory's clamp (e0 - B* C4 t - B* C5 (sin M - sin M0)) over [t0, t1] minutes
+  // (radius_bounds.cpp, steps 1 and 2); ok = false when drag ends the orbit there.
+  struct MeanRanges {
+    bool ok = false;
+    double am_lo = 0.0, am_hi = 0.0, em_lo = 0.0, em_hi = 0.0;
+  };
+  MeanRanges mean_ranges(double t0_min, double t1_min) const noexcept;
   void init_near_earth(double ao, double posq, double rteosq, double omeosq, double cosio,
                        double sinio, double rp);
   void init_drag_higher_order(double ao, double tsi, double sfour);
