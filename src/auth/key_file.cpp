@@ -74,7 +74,14 @@ KeyRecord parse_key_line(const std::string& path, int line_no, const std::string
 
 }  // namespace
 
-const char* role_name(KeyRole r) noexcept { return r == KeyRole::kSensor ? "sensor" : "command"; }
+const char* role_name(KeyRole r) noexcept {
+  switch (r) {
+    case KeyRole::kCommand: return "command";
+    case KeyRole::kSensor: return "sensor";
+    case KeyRole::kTelemetry: return "telemetry";
+  }
+  return "command";
+}
 
 std::vector<KeyRecord> read_key_file(const std::string& path) {
   check_private_file(path);

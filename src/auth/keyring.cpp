@@ -31,6 +31,9 @@ const char* KeyRing::add(std::int32_t id, KeyRole role, const KeyBytes& key,
   if (id <= 0) return "key id must be 1 .. 2147483647";
   if (find(id) != nullptr) return "key id loaded twice";
   if (n_ == kMaxKeys) return "more keys than the node holds (8)";
+  if (role == KeyRole::kTelemetry && telemetry_key() != nullptr) {
+    return "a second telemetry key (the node signs with one)";
+  }
   KeyEntry& e = keys_[n_++];
   e.id = id;
   e.role = role;
@@ -54,24 +57,54 @@ KeyEntry* KeyRing::find_mutable(std::int32_t id) noexcept {
   return nullptr;
 }
 
-AuthResult KeyRing::verify(ArsnSlot slot, const char* channel, const std::uint8_t* data,
-                           std::size_t size, std::int32_t* key_id) noexcept {
+AuthResult KeyRing::check(ArsnSlot slot, const char* channel, const std::uint8_t* data,
+                          std::size_t size, TrailerView* trailer) const noexcept {
   TrailerView t;
   if (!read_trailer(data, size, &t)) return AuthResult::kMalformed;
   if (t.key_id == 0) return AuthResult::kUnsigned;
-  KeyEntry* e = find_mutable(t.key_id);
+  const KeyEntry* e = find(t.key_id);
   if (e == nullptr) return AuthResult::kUnknownKey;
   if (!mac_valid(e->key, channel, data, size)) return AuthResult::kBadMac;
+  if (trailer != nullptr) *trailer = t;  // authentic from here on
   if (e->state == KeyState::kRetired) return AuthResult::kRetiredKey;
   if (e->state == KeyState::kStandby) return AuthResult::kStandbyKey;
-  const bool command_key = e->role == KeyRole::kCommand;
-  if (command_key != is_command_slot(slot)) return AuthResult::kWrongRole;
+  const bool role_ok = is_command_slot(slot) ? e->role == KeyRole::kCommand
+                                             : e->role == KeyRole::kSensor;
+  if (!role_ok) return AuthResult::kWrongRole;
+  if (t.arsn <= e->arsn[static_cast<std::size_t>(slot)]) return AuthResult::kReplayed;
+  return AuthResult::kOk;
+}
+
+bool KeyRing::commit(std::int32_t key_id, ArsnSlot slot, std::int64_t arsn) noexcept {
+  KeyEntry* e = find_mutable(key_id);
+  if (e == nullptr) return false;
   std::int64_t& last = e->arsn[static_cast<std::size_t>(slot)];
-  if (t.arsn <= last) return AuthResult::kReplayed;
-  last = t.arsn;
-  if (command_key) dirty_ = true;
+  if (arsn <= last) return false;
+  last = arsn;
+  if (e->role == KeyRole::kCommand) dirty_ = true;
+  return true;
+}
+
+AuthResult KeyRing::verify(ArsnSlot slot, const char* channel, const std::uint8_t* data,
+                           std::size_t size, std::int32_t* key_id) noexcept {
+  TrailerView t;
+  const AuthResult r = check(slot, channel, data, size, &t);
+  if (r != AuthResult::kOk) return r;
+  if (!commit(t.key_id, slot, t.arsn)) return AuthResult::kReplayed;  // cannot happen: checked
   if (key_id != nullptr) *key_id = t.key_id;
   return AuthResult::kOk;
+}
+
+std::int64_t KeyRing::last_arsn(std::int32_t key_id, ArsnSlot slot) const noexcept {
+  const KeyEntry* e = find(key_id);
+  return e == nullptr ? 0 : e->arsn[static_cast<std::size_t>(slot)];
+}
+
+const KeyEntry* KeyRing::telemetry_key() const noexcept {
+  for (std::size_t i = 0; i < n_; ++i) {
+    if (keys_[i].role == KeyRole::kTelemetry) return &keys_[i];
+  }
+  return nullptr;
 }
 
 KeyCmdResult KeyRing::activate(std::int32_t id) noexcept {

@@ -2,14 +2,19 @@
 // to kMaxKeys HMAC-SHA-256 keys, each a security association in the sense of CCSDS 355.0-B-2
 // with its role, its state and its last accepted anti-replay sequence numbers (ARSN).
 //
-// verify() is the whole receive-side rule, in this order: the trailer is read (too short:
+// check() is the whole receive-side rule, in this order: the trailer is read (too short:
 // kMalformed; key id 0: kUnsigned), the key is looked up (kUnknownKey), the MAC is checked in
 // constant time (kBadMac) — nothing in the message has been trusted or decoded yet, and a forged
 // message changes no state — then the key's state (kStandbyKey, kRetiredKey) and role
-// (kWrongRole: a sensor key cannot command, a command key cannot feed guidance), then the ARSN
-// must exceed the last accepted one of its slot (kReplayed). Only then is the ARSN advanced.
+// (kWrongRole: a sensor key cannot command, a command key cannot feed guidance, a telemetry key
+// signs only what the node sends), then the ARSN must exceed the last accepted one of its slot
+// (kReplayed). check() changes nothing: the caller decodes the message, checks its freshness,
+// and only then commit()s its ARSN (docs/SECURITY.md ARSN-1: the ARSN advances only for a
+// message accepted in full; a refused message changes nothing). verify() is check() and
+// commit() at once, for a caller with nothing to check in between.
 // Command keys keep one ARSN for every command channel (the ground's counter); sensor keys keep
-// one per sensor channel. After construction nothing allocates or throws.
+// one per sensor channel. The telemetry key (at most one) signs the node's acknowledgements and
+// status (docs/SECURITY.md TM-*). After construction nothing allocates or throws.
 #pragma once
 
 #include <array>
@@ -21,7 +26,7 @@
 
 namespace evade::auth {
 
-enum class KeyRole : std::uint8_t { kCommand = 0, kSensor = 1 };
+enum class KeyRole : std::uint8_t { kCommand = 0, kSensor = 1, kTelemetry = 2 };
 enum class KeyState : std::uint8_t { kActive = 0, kStandby = 1, kRetired = 2 };
 
 /// Which ARSN a message advances.
@@ -36,7 +41,8 @@ enum class AuthResult : std::uint8_t {
   kBadMac,       ///< the MAC does not match (forged, corrupted, or signed for another channel)
   kStandbyKey,   ///< loaded but not activated by the ground
   kRetiredKey,   ///< retired by the ground
-  kWrongRole,    ///< a sensor key on a command channel or a command key on a sensor channel
+  kWrongRole,    ///< a sensor key on a command channel, a command key on a sensor channel, or
+                 ///< the telemetry key on any input
   kReplayed,     ///< authentic, but the ARSN is not above the last accepted one
   kCount
 };
@@ -72,10 +78,22 @@ class KeyRing {
   /// Initialization: adds a key. nullptr when added, else why not (a static text).
   const char* add(std::int32_t id, KeyRole role, const KeyBytes& key, KeyState state) noexcept;
 
-  /// The receive-side rule (see the file comment). On kOk the slot's ARSN has advanced and
-  /// *key_id (if given) is the signer; on anything else no state changed.
+  /// The receive-side rule without its last step (see the file comment): changes nothing. On
+  /// kOk, kReplayed, kStandbyKey, kRetiredKey and kWrongRole the MAC was valid and *trailer (if
+  /// given) is the message's trailer: the message is authentic and may be acknowledged.
+  AuthResult check(ArsnSlot slot, const char* channel, const std::uint8_t* data, std::size_t size,
+                   TrailerView* trailer = nullptr) const noexcept;
+  /// Advances the slot's ARSN of key_id to arsn when arsn is above it (true); false when it is
+  /// not (a message with this ARSN is now a replay) or key_id is not loaded.
+  bool commit(std::int32_t key_id, ArsnSlot slot, std::int64_t arsn) noexcept;
+  /// check() then, on kOk, commit(). On kOk the slot's ARSN has advanced and *key_id (if given)
+  /// is the signer; on anything else no state changed.
   AuthResult verify(ArsnSlot slot, const char* channel, const std::uint8_t* data,
                     std::size_t size, std::int32_t* key_id = nullptr) noexcept;
+  /// The slot's last accepted ARSN of key_id (0 when none or the key is not loaded).
+  std::int64_t last_arsn(std::int32_t key_id, ArsnSlot slot) const noexcept;
+  /// The telemetry key (role kTelemetry), or nullptr when none is loaded.
+  const KeyEntry* telemetry_key() const noexcept;
 
   /// Key commands from the ground (already authenticated).
   KeyCmdResult activate(std::int32_t id) noexcept;
