@@ -1,9 +1,11 @@
-// `evade keygen --out FILE --key-id N [--role command|sensor]`: a new HMAC-SHA-256 key from the
-// operating system's random generator, written to a new file with mode 0600
-// (auth::generate_key, auth::write_key_file; docs/SECURITY.md KEY-1). Prints the file, the id
-// and the role, never the key.
+// `evade keygen --out FILE --key-id N [--role command|sensor|telemetry]`: a new HMAC-SHA-256 key
+// from the operating system's random generator (a weak draw is drawn again), written to a new
+// file with mode 0600 (auth::generate_key, auth::write_key_file; docs/SECURITY.md KEY-1). A
+// telemetry key is the one the node signs its acknowledgements and status with (the ground
+// holds it to verify them). Prints the file, the id and the role, never the key.
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "cli.hpp"
@@ -21,10 +23,10 @@ struct KeygenOptions {
 
 int run_keygen(const KeygenOptions& o) {
   using namespace evade::auth;
-  const KeyRole role = o.role == "sensor" ? KeyRole::kSensor : KeyRole::kCommand;
-  KeyRecord k = generate_key(o.key_id, role);
+  KeyRole role = KeyRole::kCommand;
+  if (!parse_role(o.role, &role)) throw std::invalid_argument("--role " + o.role + ": not a role");
+  const KeyRecord k = generate_key(o.key_id, role);  // wipes its key when it goes
   write_key_file(o.out, k);
-  wipe(k.key.data(), k.key.size());
   if (o.json) {
     evade::cli::print_json({{"key_file", o.out}, {"key_id", o.key_id}, {"role", o.role},
                             {"algorithm", "HMAC-SHA-256"}, {"mode", "0600"}});
@@ -41,14 +43,16 @@ evade::cli::Runner setup(CLI::App& app) {
   app.add_option("--key-id", o->key_id, "key id (security association) [-]")
       ->check(CLI::Range(1, 2147483647))->capture_default_str();
   app.add_option("--role", o->role,
-                 "command (plans, arm, key commands) | sensor (nav, angles, sim clock)")
-      ->check(CLI::IsMember({"command", "sensor"}))->capture_default_str();
+                 "command (plans, arm, key commands) | sensor (nav, angles, sim clock) | "
+                 "telemetry (the node's acknowledgements and status)")
+      ->check(CLI::IsMember({"command", "sensor", "telemetry"}))->capture_default_str();
   app.add_flag("--json", o->json, "machine-readable result");
   return [o]() { return run_keygen(*o); };
 }
 
 const bool kRegistered = evade::cli::register_command(
-    {{"keygen", nullptr}, "Generate a command or sensor key file (docs/SECURITY.md)", &setup});
+    {{"keygen", nullptr}, "Generate a command, sensor or telemetry key file (docs/SECURITY.md)",
+     &setup});
 
 }  // namespace cmd_keygen
 }  // namespace
