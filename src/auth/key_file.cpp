@@ -1,8 +1,9 @@
 // Key files (include/evade/auth/key_file.hpp; docs/SECURITY.md KEY-1, KEY-2): the checked read
 // (no symbolic link, a regular private file of this user, checked on the open descriptor, at
 // most 64 KiB into a buffer wiped before it is freed), the strict line parser whose errors name
-// the line and the field but never echo any text of the file, the weak-key rule and key
-// generation.
+// the line and the field but never echo any text of the file, the weak-key rule, key
+// generation and the key states at loading (every command key standby until the state file
+// says otherwise).
 #include "evade/auth/key_file.hpp"
 
 #include <fcntl.h>
@@ -251,13 +252,8 @@ void write_key_file(const std::string& path, const KeyRecord& key) {
 }
 
 void load_into(const std::vector<KeyRecord>& records, KeyRing* ring) {
-  bool have_active_command = ring->active_command_keys() > 0;
   for (const KeyRecord& r : records) {
-    KeyState s = KeyState::kActive;
-    if (r.role == KeyRole::kCommand) {
-      s = have_active_command ? KeyState::kStandby : KeyState::kActive;
-      have_active_command = true;
-    }
+    const KeyState s = r.role == KeyRole::kCommand ? KeyState::kStandby : KeyState::kActive;
     const char* why = ring->add(r.id, r.role, r.key, s);
     if (why != nullptr) {
       throw std::runtime_error("key " + std::to_string(r.id) + ": " + why);

@@ -7,8 +7,8 @@
 // key text, upper case, CRLF, NUL, a duplicate id) is refused naming its line and its field,
 // and no error text ever contains the key's hex or any 16-digit window of it; no heap block is
 // freed still holding key text, on success or on any error; weak keys are refused with their
-// reason; generate_key redraws weak draws and gives up after 8; load_into makes the first
-// command key active and the others standby.
+// reason; generate_key redraws weak draws and gives up after 8; load_into makes every command
+// key standby (its order in the files gives it no state) and sensor and telemetry keys active.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -489,33 +489,33 @@ TEST(GenerateKey, AFailingSourceMakesNoKey) {
   EXPECT_THROW((void)generate_key(2, KeyRole::kCommand, nullptr), std::invalid_argument);
 }
 
-TEST(KeyFileLoadInto, FirstCommandKeyActiveOthersStandbySensorsActive) {
+// KEY-2: states never come from the order of --keys. A new command key listed first (the
+// attack: it became active without a signed activation) is standby like every command key.
+TEST(KeyFileLoadInto, EveryCommandKeyIsStandbyWhereverItIsListed) {
   std::vector<KeyRecord> records;
   for (std::int32_t id : {5, 6, 7}) records.push_back(generate_key(id, KeyRole::kCommand));
   records.insert(records.begin() + 1, generate_key(30, KeyRole::kSensor));
-  records.push_back(generate_key(31, KeyRole::kSensor));
-  // ids in order: 5 command, 30 sensor, 6 command, 7 command, 31 sensor.
+  records.push_back(generate_key(31, KeyRole::kTelemetry));
+  // ids in order: 5 command, 30 sensor, 6 command, 7 command, 31 telemetry.
   KeyRing ring;
   load_into(records, &ring);
   ASSERT_EQ(ring.size(), 5U);
-  EXPECT_EQ(ring.find(5)->state, KeyState::kActive);
-  EXPECT_EQ(ring.find(6)->state, KeyState::kStandby);
-  EXPECT_EQ(ring.find(7)->state, KeyState::kStandby);
+  for (std::int32_t id : {5, 6, 7}) EXPECT_EQ(ring.find(id)->state, KeyState::kStandby) << id;
   EXPECT_EQ(ring.find(30)->state, KeyState::kActive);
   EXPECT_EQ(ring.find(31)->state, KeyState::kActive);
   EXPECT_EQ(ring.find(30)->role, KeyRole::kSensor);
+  EXPECT_EQ(ring.telemetry_key()->id, 31);
   EXPECT_EQ(ring.find(6)->key, records[2].key);
-  EXPECT_EQ(ring.active_command_keys(), 1);
+  EXPECT_EQ(ring.active_command_keys(), 0);
 }
 
-TEST(KeyFileLoadInto, SensorKeysFirstStillLeaveOneActiveCommandKey) {
-  const std::vector<KeyRecord> records = {generate_key(30, KeyRole::kSensor),
-                                          generate_key(1, KeyRole::kCommand),
-                                          generate_key(2, KeyRole::kCommand)};
+TEST(KeyFileLoadInto, ANewCommandKeyListedFirstDoesNotBecomeActive) {
   KeyRing ring;
-  load_into(records, &ring);
-  EXPECT_EQ(ring.find(1)->state, KeyState::kActive);
-  EXPECT_EQ(ring.find(2)->state, KeyState::kStandby);
+  load_into({generate_key(9, KeyRole::kCommand)}, &ring);  // the attacker's new key, first
+  load_into({generate_key(1, KeyRole::kCommand)}, &ring);  // the ground's key
+  EXPECT_EQ(ring.find(9)->state, KeyState::kStandby);
+  EXPECT_EQ(ring.find(1)->state, KeyState::kStandby);
+  EXPECT_EQ(ring.active_command_keys(), 0);
 }
 
 TEST(KeyFileLoadInto, RingRefusalThrowsNamingTheId) {

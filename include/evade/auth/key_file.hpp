@@ -68,9 +68,11 @@ const char* role_name(KeyRole r) noexcept;
 /// The role named name (as role_name writes it); false for anything else.
 bool parse_role(const std::string& name, KeyRole* role) noexcept;
 
-/// Loads records into ring: the first command key active, every other command key standby
-/// (the ground activates it: KEY-2), sensor and telemetry keys active. Throws
-/// std::runtime_error naming the id when the ring refuses one.
+/// Adds records to ring: every command key standby, sensor and telemetry keys active. The
+/// states of command keys never come from the order of the files (a new command key listed
+/// first must not become active without a signed activation, KEY-2): the node's state file
+/// (auth::StateFile::load, or init on a first start) sets them. Throws std::runtime_error
+/// naming the id when the ring refuses one.
 void load_into(const std::vector<KeyRecord>& records, KeyRing* ring);
 
 }  // namespace evade::auth
