@@ -1,4 +1,5 @@
-// HMAC-SHA-256 through libsodium (include/evade/auth/mac.hpp).
+// HMAC-SHA-256, key derivation and key check values through libsodium
+// (include/evade/auth/mac.hpp; docs/SECURITY.md AUTH-1, AUTH-4, KEY-1).
 #include "evade/auth/mac.hpp"
 
 #include <cstring>
@@ -53,5 +54,28 @@ bool random_bytes(std::uint8_t* out, std::size_t n) noexcept {
 }
 
 void wipe(void* p, std::size_t n) noexcept { sodium_memzero(p, n); }
+
+KeyBytes derive_subkey(const KeyBytes& master, std::uint64_t subkey_id,
+                       const char (&context)[9]) noexcept {
+  static_assert(crypto_kdf_KEYBYTES == kKeyBytes, "a master key is an evade key");
+  static_assert(crypto_kdf_CONTEXTBYTES == sizeof(context) - 1, "8 characters and the NUL");
+  static_assert(kKeyBytes >= crypto_kdf_BYTES_MIN && kKeyBytes <= crypto_kdf_BYTES_MAX,
+                "libsodium derives 32-byte subkeys");
+  KeyBytes out{};
+  if (crypto_kdf_derive_from_key(out.data(), out.size(), subkey_id, context, master.data()) != 0) {
+    out.fill(0);  // refused: the documented all-zero subkey, which every caller refuses
+  }
+  return out;
+}
+
+KeyCheckValue key_check_value(const KeyBytes& key) noexcept {
+  static const char kLabel[] = "evade key check value";
+  Mac full = hmac_sha256(key.data(), key.size(), reinterpret_cast<const std::uint8_t*>(kLabel),
+                         sizeof(kLabel) - 1);
+  KeyCheckValue kcv{};
+  std::memcpy(kcv.data(), full.data(), kcv.size());
+  sodium_memzero(full.data(), full.size());
+  return kcv;
+}
 
 }  // namespace evade::auth

@@ -5,7 +5,8 @@
 // mac_equal compares all 32 bytes; sign_encoded and mac_valid agree, and any single changed
 // byte of a signed message fails; read_trailer decodes the big-endian key id and ARSN at the
 // end of the message; and every function refuses a message shorter than a fingerprint and a
-// trailer (kMinSignedBytes).
+// trailer (kMinSignedBytes). derive_subkey reproduces libsodium's crypto_kdf vector and
+// key_check_value an independently computed HMAC; neither shows the bytes of its key.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -310,6 +311,63 @@ TEST(ReadTrailer, ReadsWhatSyntheticMessageWrote) {
   ASSERT_TRUE(read_trailer(msg.data(), msg.size(), &t));
   EXPECT_EQ(t.key_id, INT32_MAX);
   EXPECT_EQ(t.arsn, INT64_MAX);
+}
+
+
+// ---- derive_subkey and key_check_value (AUTH-4, KEY-1) ----
+
+KeyBytes counting_key() {
+  KeyBytes k{};
+  for (std::size_t i = 0; i < k.size(); ++i) k[i] = static_cast<std::uint8_t>(i);
+  return k;
+}
+
+// libsodium's own test vector (test/default/kdf.exp: master key 00..1f, context "KDF test",
+// subkey id 32, 32 bytes), also reproduced with Python's hashlib.blake2b(key=master,
+// salt=le64(32) || 0^8, person="KDF test" || 0^8, digest_size=32).
+TEST(DeriveSubkey, MatchesLibsodiumsKdfVector) {
+  const KeyBytes sub = derive_subkey(counting_key(), 32, "KDF test");
+  EXPECT_EQ(to_hex(sub.data(), sub.size()),
+            "154b291f11196737f8b7f491e4ca11764e0227d34f94295408a869f007aa8618");
+}
+
+TEST(DeriveSubkey, DiffersByIdContextAndMasterAndHoldsNoMasterBytes) {
+  const KeyBytes master = counting_key();
+  const KeyBytes a = derive_subkey(master, 1, "evadestf");
+  EXPECT_EQ(a, derive_subkey(master, 1, "evadestf")) << "deterministic";
+  EXPECT_NE(a, derive_subkey(master, 2, "evadestf"));
+  EXPECT_NE(a, derive_subkey(master, 1, "evadestg"));
+  KeyBytes other = master;
+  other[31] ^= 1U;
+  EXPECT_NE(a, derive_subkey(other, 1, "evadestf"));
+  EXPECT_NE(a, KeyBytes{});
+  const std::string sub_hex = to_hex(a.data(), a.size());
+  const std::string master_hex = to_hex(master.data(), master.size());
+  for (std::size_t i = 0; i + 8 <= master_hex.size(); i += 2) {
+    EXPECT_EQ(sub_hex.find(master_hex.substr(i, 8)), std::string::npos) << i;
+  }
+}
+
+// HMAC-SHA-256(00..1f, "evade key check value")[0, 8), computed with Python's hmac module.
+TEST(KeyCheckValue, IsTheFirstEightBytesOfTheHmacOfItsLabel) {
+  const KeyCheckValue kcv = key_check_value(counting_key());
+  EXPECT_EQ(to_hex(kcv.data(), kcv.size()), "f158ff32821fb1bd");
+  const Mac full = hmac_sha256(counting_key().data(), kKeyBytes,
+                               reinterpret_cast<const std::uint8_t*>("evade key check value"), 21);
+  EXPECT_TRUE(std::equal(kcv.begin(), kcv.end(), full.begin()));
+}
+
+TEST(KeyCheckValue, TellsKeysOneBitApartAndHoldsNoKeyBytes) {
+  const KeyBytes k = counting_key();
+  KeyBytes k2 = k;
+  k2[0] ^= 0x80U;
+  EXPECT_NE(key_check_value(k), key_check_value(k2));
+  const KeyCheckValue kcv = key_check_value(k);
+  const std::string key_hex = to_hex(k.data(), k.size());
+  const std::string kcv_hex = to_hex(kcv.data(), kcv.size());
+  for (std::size_t i = 0; i + 4 <= kcv_hex.size(); i += 2) {
+    EXPECT_EQ(key_hex.find(kcv_hex.substr(i, 4)), std::string::npos) << kcv_hex;
+  }
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 // audited library whose HMAC-SHA-256, constant-time comparison (sodium_memcmp) and system random
 // generator (randombytes_buf) are all this needs; no primitive is written here. The MAC of a
 // message on an LCM channel binds the channel name (channel_mac), so a message signed for one
-// channel fails on any other. Nothing here allocates or throws.
+// channel fails on any other. Subkeys for other purposes (the node's state file, AUTH-4) come
+// from libsodium's key derivation, and a key is named by its check value (key_check_value)
+// where its bytes must not appear. Nothing here allocates or throws.
 #pragma once
 
 #include <array>
@@ -42,5 +44,21 @@ bool random_bytes(std::uint8_t* out, std::size_t n) noexcept;
 
 /// Overwrites n bytes so that the compiler cannot elide it (sodium_memzero).
 void wipe(void* p, std::size_t n) noexcept;
+
+/// A subkey of master for one purpose (libsodium's crypto_kdf_derive_from_key: BLAKE2b keyed
+/// with master, salted with subkey_id, personalized with the 8-character context): knowing a
+/// subkey reveals neither master nor any other subkey. All zero if libsodium refuses (it does
+/// not for 32-byte subkeys); a caller refuses an all-zero subkey (key_weakness). The caller
+/// wipes the subkey after use.
+KeyBytes derive_subkey(const KeyBytes& master, std::uint64_t subkey_id,
+                       const char (&context)[9]) noexcept;
+
+inline constexpr std::size_t kCheckValueBytes = 8;
+using KeyCheckValue = std::array<std::uint8_t, kCheckValueBytes>;
+
+/// The key's check value: the first 8 bytes of HMAC-SHA-256(key, "evade key check value").
+/// It tells keys apart (a state file names the keys it was written for) without revealing
+/// them: finding the key from it is inverting HMAC-SHA-256.
+KeyCheckValue key_check_value(const KeyBytes& key) noexcept;
 
 }  // namespace evade::auth
