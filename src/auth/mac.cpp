@@ -73,7 +73,7 @@ KeyCheckValue key_check_value(const KeyBytes& key) noexcept {
   Mac full = hmac_sha256(key.data(), key.size(), reinterpret_cast<const std::uint8_t*>(kLabel),
                          sizeof(kLabel) - 1);
   KeyCheckValue kcv{};
-  std::memcpy(kcv.data(), full.data(), kcv.size());
+  (void)std::memcpy(kcv.data(), full.data(), kcv.size());  // returns its destination
   sodium_memzero(full.data(), full.size());
   return kcv;
 }

@@ -253,7 +253,7 @@ bool looks_like_key_hex(Span s) noexcept {
 bool TextSink::put(const char* s) noexcept {
   const std::size_t len = std::strlen(s);
   if (len > cap - n) return false;
-  std::memcpy(buf + n, s, len);
+  (void)std::memcpy(buf + n, s, len);  // returns its destination
   n += len;
   return true;
 }
