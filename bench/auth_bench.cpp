@@ -1,12 +1,16 @@
 // Authentication benchmarks (docs/PERFORMANCE.md "Authentication", docs/SECURITY.md AUTH-6).
-//  BM_MacVerifyPlan: auth::mac_valid on a signed evade_burn_plan_t (756 B): the HMAC-SHA-256
+//  BM_MacVerifyPlan: auth::mac_valid on a signed evade_burn_plan_t (629 B): the HMAC-SHA-256
 //    the node computes for every message on a channel that must be signed (a forged plan costs
 //    exactly this before it is refused).
 //  BM_MacVerifySensor: the same on a signed evade_angles_t (the largest sensor message).
-//  BM_NodeCycleAuth/0 and /1: one node cycle on memq:// with nav + angles, as BM_NodeCycleMemq
-//    (node_bench.cpp), with the sensors unsigned and not required (0) or signed and required
-//    (1): the cycle's p50/p99/max with and without verification. The messages are encoded (and
-//    signed) before the timer starts: the sender's signing is not the node's cost.
+//  BM_KeyRingCheckPlan: auth::KeyRing::check on the same plan, the node's whole receive rule
+//    (trailer, key lookup, MAC, state, role, ARSN compared): what the node pays per message.
+//  BM_SignAck: signing one evade_cmd_ack_t with the telemetry key (encode_signed).
+//  BM_NodeCycleAuth/0, /1 and /2: one node cycle on memq:// with nav + angles, as
+//    BM_NodeCycleMemq (node_bench.cpp), with the sensors unsigned and not required (0), signed
+//    and required (1), or signed and required with the node holding a telemetry key, so that
+//    its status is signed every cycle (2): the cycle's p50/p99/max. The messages are encoded
+//    (and signed) before the timer starts: the sender's signing is not the node's cost.
 //  Run: build/bench/auth_bench --benchmark_repetitions=5
 #include <benchmark/benchmark.h>
 
@@ -18,13 +22,15 @@
 #include <memory>
 #include <vector>
 
+#include "evade/auth/keyring.hpp"
 #include "evade/auth/trailer.hpp"
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_burn_plan_t.hpp"
+#include "evade/evade_cmd_ack_t.hpp"
 #include "evade/evade_nav_state_t.hpp"
 #include "evade/guidance/los_geometry.hpp"
 #include "evade/guidance_lcm/channels.hpp"
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
 #include "evade/guidance_lcm/signed_encode.hpp"
 
 namespace {
@@ -69,6 +75,31 @@ void BM_MacVerifySensor(benchmark::State& state) {
 }
 BENCHMARK(BM_MacVerifySensor)->Unit(benchmark::kMicrosecond);
 
+void BM_KeyRingCheckPlan(benchmark::State& state) {
+  evade_burn_plan_t m{};
+  m.n_impulses = 1;
+  const std::vector<std::uint8_t> b = signed_bytes(m, kChanPlan);
+  auth::KeyRing ring;
+  (void)ring.add(1, auth::KeyRole::kCommand, bench_key(1).key, auth::KeyState::kActive);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ring.check(auth::ArsnSlot::kCommand, kChanPlan, b.data(), b.size()));
+  }
+  state.counters["bytes"] = static_cast<double>(b.size());
+}
+BENCHMARK(BM_KeyRingCheckPlan)->Unit(benchmark::kMicrosecond);
+
+void BM_SignAck(benchmark::State& state) {
+  evade_cmd_ack_t a{};
+  std::uint8_t buf[512];
+  const SigningKey key = bench_key(3);
+  std::int64_t arsn = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(encode_signed(&a, kChanCmdAck, key, ++arsn, buf, sizeof(buf)));
+  }
+  state.counters["bytes"] = static_cast<double>(a.getEncodedSize());
+}
+BENCHMARK(BM_SignAck)->Unit(benchmark::kMicrosecond);
+
 std::int64_t now_ns() {
   timespec ts{};
   (void)clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -104,6 +135,9 @@ void BM_NodeCycleAuth(benchmark::State& state) {
   cfg.auth.nav_required = cfg.auth.angles_required = auth_on;
   NodeSecurity sec;
   (void)sec.keys.add(2, auth::KeyRole::kSensor, bench_key(2).key, auth::KeyState::kActive);
+  if (state.range(0) == 2) {
+    (void)sec.keys.add(3, auth::KeyRole::kTelemetry, bench_key(3).key, auth::KeyState::kActive);
+  }
   auto node = std::make_unique<GuidanceNode>(lcm, cfg, nullptr, sec);  // dies before lcm
   std::uint8_t nav_buf[512];
   std::uint8_t ang_buf[512];
@@ -144,7 +178,7 @@ void BM_NodeCycleAuth(benchmark::State& state) {
   node.reset();
   lcm_destroy(lcm);
 }
-BENCHMARK(BM_NodeCycleAuth)->Arg(0)->Arg(1)->Iterations(20000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_NodeCycleAuth)->Arg(0)->Arg(1)->Arg(2)->Iterations(20000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -39,9 +39,12 @@
 
 #include <lcm/lcm.h>
 
+#include "evade/evade_angles_t.hpp"
+#include "evade/evade_nav_state_t.hpp"
+#include "evade/evade_sim_clock_t.hpp"
 #include "evade/guidance/los_geometry.hpp"
 #include "evade/guidance_lcm/channels.hpp"
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
 
 namespace {
 

@@ -22,7 +22,7 @@
 #include "evade/auth/key_file.hpp"
 #include "evade/config/scenario.hpp"
 #include "evade/core/quantile.hpp"
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
 #include "evade/guidance_lcm/lcm_url.hpp"
 #include "node_loop.hpp"
 #include "node_options.hpp"
@@ -80,11 +80,22 @@ void print_banner(const evade::node::NodeOptions& o, const evade::guidance_lcm::
                      c.guidance.armed ? "armed" : "disarmed");
 }
 
-void warn_if_no_command_key(const evade::guidance_lcm::NodeConfig& c,
-                            const evade::guidance_lcm::NodeSecurity& sec) {
-  if ((c.auth.plan_required || c.auth.arm_required) && sec.keys.active_command_keys() == 0) {
+void warn_about_auth(const evade::guidance_lcm::NodeConfig& c,
+                     const evade::guidance_lcm::NodeSecurity& sec) {
+  bool command_keys = false;
+  for (std::size_t i = 0; i < sec.keys.size(); ++i) {
+    command_keys = command_keys || sec.keys.entry(i).role == evade::auth::KeyRole::kCommand;
+  }
+  if ((c.auth.plan_required || c.auth.arm_required) && !command_keys) {
     (void)std::fprintf(stderr, "evade_guidance_node: no command key loaded (--keys): every plan "
                        "and arm command will be refused (docs/SECURITY.md)\n");
+  }
+  if (!c.auth.nav_required || !c.auth.angles_required || !c.auth.clock_required) {
+    (void)std::fprintf(stderr, "evade_guidance_node: warning: sensor authentication is off "
+                       "(--auth-sensors): any process that can reach the bus can feed the nav, "
+                       "angles%s the law steers by; on a shared network run with "
+                       "--auth-sensors required and sign the sensors (docs/SECURITY.md AUTH-3)\n",
+                       c.lockstep ? " and the sim clock" : "");
   }
 }
 
@@ -107,7 +118,8 @@ void print_summary(const evade::guidance_lcm::GuidanceNode& n, const char* why) 
                      cs.max_us());
 }
 
-nlohmann::json inputs_json(const evade::guidance_lcm::InputCounts& c) {
+nlohmann::json inputs_json(const evade::guidance_lcm::GuidanceNode& n) {
+  const evade::guidance_lcm::InputCounts& c = n.counts();
   nlohmann::json j = {{"received", c.received},     {"consumed", c.consumed},
                       {"rejected", c.rejected},     {"stale", c.stale},
                       {"superseded", c.superseded}, {"dropped", c.dropped},
@@ -121,6 +133,11 @@ nlohmann::json inputs_json(const evade::guidance_lcm::InputCounts& c) {
           c.by_reason[r];
   }
   j["by_reason"] = reasons;
+  nlohmann::json per_input = nlohmann::json::object();
+  for (const evade::guidance_lcm::InputRow& row : evade::guidance_lcm::kInputRows) {
+    per_input[row.name] = n.received(row.input);
+  }
+  j["received_by_input"] = per_input;
   return j;
 }
 
@@ -135,26 +152,35 @@ nlohmann::json auth_json(const evade::guidance_lcm::GuidanceNode& n) {
     const char* st = e.state == KeyState::kActive    ? "active"
                      : e.state == KeyState::kStandby ? "standby"
                                                      : "retired";
-    keys.push_back({{"id", e.id}, {"role", evade::auth::role_name(e.role)}, {"state", st}});
+    nlohmann::json k = {{"id", e.id}, {"role", evade::auth::role_name(e.role)}, {"state", st}};
+    if (e.role == evade::auth::KeyRole::kCommand) {
+      k["command_arsn"] = e.arsn[static_cast<std::size_t>(evade::auth::ArsnSlot::kCommand)];
+    }
+    keys.push_back(k);
   }
   const auto& c = n.counts();
   using evade::guidance_lcm::Reason;
   nlohmann::json reasons = nlohmann::json::object();
   for (Reason r : {Reason::kUnsigned, Reason::kUnknownKey, Reason::kBadMac, Reason::kStandbyKey,
                    Reason::kRetiredKey, Reason::kWrongKeyRole, Reason::kTooShortForTrailer,
-                   Reason::kReplayedArsn, Reason::kVerifyBudget, Reason::kNotPersisted}) {
+                   Reason::kReplayedArsn, Reason::kVerifyBudget, Reason::kNotPersisted,
+                   Reason::kInboxFull}) {
     reasons[evade::guidance_lcm::reason_name(r)] = c.by_reason[static_cast<int>(r)];
   }
-  auto req = [](bool b) { return b ? "required" : "off"; };
-  return {{"required", {{"plan", req(a.plan_required)}, {"arm", req(a.arm_required)},
-                        {"key_cmd", "required"}, {"nav", req(a.nav_required)},
-                        {"angles", req(a.angles_required)}, {"clock", req(a.clock_required)}}},
+  nlohmann::json required = nlohmann::json::object();
+  for (const evade::guidance_lcm::InputRow& row : evade::guidance_lcm::kInputRows) {
+    required[row.name] = evade::guidance_lcm::input_required(row, a) ? "required" : "off";
+  }
+  return {{"required", required},
           {"keys", keys},
           {"active_command_keys", n.keys().active_command_keys()},
           {"auth_failed", c.auth_failed},
           {"replayed", c.replayed},
           {"by_reason", reasons},
-          {"state_persist_failures", n.auth_persist_failures()}};
+          {"state_persist_failures", n.auth_persist_failures()},
+          {"telemetry_key", n.keys().telemetry_key() != nullptr ? n.keys().telemetry_key()->id : 0},
+          {"acks_published", n.acks_published()},
+          {"acks_unsent", n.acks_unsent()}};
 }
 
 nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool lockstep,
@@ -166,7 +192,7 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
   j["rate_hz"] = n.config().guidance.rate_hz;
   j["cycles"] = n.cycles();
   j["overruns"] = cs.overruns();
-  j["inputs"] = inputs_json(n.counts());
+  j["inputs"] = inputs_json(n);
   j["watchdog_cycles"] = n.watchdog_cycles();
   j["compute_us"] = {{"p50_last_1024", cs.quantile(0.5)},
                      {"p99_last_1024", cs.quantile(0.99)},
@@ -213,7 +239,7 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
   LcmPtr in = open_lcm(in_url);
   LcmPtr out;
   if (!opts.out_lcm_url.empty()) out = open_lcm(opts.out_lcm_url);
-  warn_if_no_command_key(cfg, sec);
+  warn_about_auth(cfg, sec);
   guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get(), sec);
   install_signal_handlers();
   // try_realtime says on stderr what was refused; the node runs on without it, by design.
@@ -227,6 +253,7 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
   const node::LoopResult res =
       opts.lockstep ? node::run_lockstep(nodecore, lim, &g_stop)
                     : node::run_fixed_rate(nodecore, cfg.guidance.rate_hz, lim, &g_stop);
+  nodecore.stop();  // what is still queued is counted (NODE-IN-1) before the report
   if (!opts.quiet) print_summary(nodecore, res.why);
   if (opts.stats_json &&
       std::printf("%s\n", stats_json(nodecore, opts.lockstep, res).dump(2).c_str()) < 0)

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
 
 namespace evade::node {
 

@@ -2,8 +2,10 @@
 // through its table, so a bad value gives the same text here as in `evade sim`.
 #include "node_options.hpp"
 
-#include <stdexcept>
 #include <time.h>
+
+#include <cstdint>
+#include <stdexcept>
 
 #include "evade/auth/key_file.hpp"
 #include "param_flag_option.hpp"
@@ -38,10 +40,19 @@ void add_param_flags(CLI::App& app, NodeOptions& o) {
 
 void add_auth_options(CLI::App& app, NodeOptions& o) {
   app.add_option("--keys", o.key_files,
-                 "key file written by `evade keygen` (mode 0600; repeatable): command and sensor "
-                 "keys (docs/SECURITY.md)");
+                 "key file written by `evade keygen` (mode 0600; repeatable): command, sensor "
+                 "and telemetry keys (docs/SECURITY.md)");
   app.add_option("--auth-state", o.auth_state,
-                 "file of the persisted key states and command ARSNs (required with --keys)");
+                 "file of the persisted key states and command ARSNs (required with command "
+                 "keys; the node starts only from a valid one, or with --auth-init)");
+  app.add_option("--auth-init", o.auth_init,
+                 "first start only: write a new --auth-state (refused if one exists) with this "
+                 "command key active and the others standby [-]")
+      ->check(CLI::Range(1, 2147483647));
+  app.add_option("--auth-arsn-floor", o.auth_arsn_floor,
+                 "with --auth-init: every command ARSN starts here (recovery after a lost state "
+                 "file: the ground's last ARSN, docs/SECURITY.md) [-]")
+      ->check(CLI::Range(static_cast<std::int64_t>(0), INT64_MAX));
   app.add_option("--auth-commands", o.auth_commands,
                  "required|off: plans and arm commands must be signed = node.auth.plan_required, "
                  "node.auth.arm_required (default required)")
@@ -125,16 +136,36 @@ guidance_lcm::NodeConfig make_node_config(const NodeOptions& o) {
   return c;
 }
 
+// AUTH-4, TM-1: command keys need the state file (the anti-replay state must survive a restart)
+// and the telemetry key (the ground acts only on signed acknowledgements).
 guidance_lcm::NodeSecurity make_node_security(const NodeOptions& o,
                                               const guidance_lcm::NodeConfig& cfg) {
   guidance_lcm::NodeSecurity sec;
   for (const std::string& f : o.key_files) auth::load_into(auth::read_key_file(f), &sec.keys);
-  if (sec.keys.size() > 0 && o.auth_state.empty()) {
+  bool command_keys = false;
+  for (std::size_t i = 0; i < sec.keys.size(); ++i) {
+    command_keys = command_keys || sec.keys.entry(i).role == auth::KeyRole::kCommand;
+  }
+  if (command_keys && o.auth_state.empty()) {
     throw std::invalid_argument(
-        "--keys needs --auth-state FILE: the anti-replay state must survive a restart "
-        "(docs/SECURITY.md AUTH-4)");
+        "command keys (--keys) need --auth-state FILE: the anti-replay state must survive a "
+        "restart (docs/SECURITY.md AUTH-4)");
+  }
+  if (command_keys && sec.keys.telemetry_key() == nullptr) {
+    throw std::invalid_argument(
+        "command keys (--keys) need a telemetry key too (`evade keygen --role telemetry`): the "
+        "node signs its acknowledgements with it, and the ground acts on no other "
+        "(docs/SECURITY.md TM-1)");
+  }
+  if (o.auth_init == 0 && o.auth_arsn_floor != 0) {
+    throw std::invalid_argument("--auth-arsn-floor applies only with --auth-init");
+  }
+  if (o.auth_init != 0 && o.auth_state.empty()) {
+    throw std::invalid_argument("--auth-init needs --auth-state FILE");
   }
   sec.state_path = o.auth_state;
+  sec.init_active_key = o.auth_init;
+  sec.init_arsn_floor = o.auth_arsn_floor;
   if (!cfg.lockstep) {  // fixed rate: sensor ARSNs (the signer's CLOCK_REALTIME) after our start
     timespec ts{};
     (void)clock_gettime(CLOCK_REALTIME, &ts);  // CLOCK_REALTIME always exists: cannot fail

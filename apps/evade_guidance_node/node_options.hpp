@@ -11,7 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
 
 namespace evade::node {
 
@@ -31,6 +31,8 @@ struct NodeOptions {
   bool quiet = false;             ///< no progress on stderr
   std::vector<std::string> key_files;  ///< --keys (repeatable): docs/SECURITY.md KEY-1
   std::string auth_state;         ///< --auth-state: persisted key states and ARSNs (AUTH-4)
+  std::int32_t auth_init = 0;     ///< --auth-init KEY_ID: first start (0: start from the file)
+  std::int64_t auth_arsn_floor = 0;  ///< --auth-arsn-floor: with --auth-init, the command ARSNs' start
   std::string auth_commands;      ///< --auth-commands required|off (plan and arm channels)
   std::string auth_sensors;       ///< --auth-sensors required|off (nav, angles, sim clock)
   /// The parameter flags given (--guidance-rate-hz, --stale-limit-s, --max-accel-mps2,

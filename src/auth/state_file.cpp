@@ -29,8 +29,6 @@ StateFile::StateFile(std::string path, const KeyEntry& telemetry) : path_(std::m
   attach(telemetry);
 }
 
-StateFile::StateFile(std::string path) : path_(std::move(path)), memory_only_(path_.empty()) {}
-
 StateFile::~StateFile() {
   if (dir_fd_ >= 0) (void)::close(dir_fd_);  // a directory opened for reading: nothing to lose
   wipe(mac_key_.data(), mac_key_.size());
@@ -59,11 +57,9 @@ void StateFile::take(StateFile* o) noexcept {
   n_kept_ = o->n_kept_;
   writes_ = o->writes_;
   ready_ = o->ready_;
-  memory_only_ = o->memory_only_;
   o->dir_fd_ = -1;  // the moved-from object refuses load, init and save
   wipe(o->mac_key_.data(), o->mac_key_.size());
   o->ready_ = false;
-  o->memory_only_ = false;
 }
 
 std::string StateFile::label() const { return "auth state file '" + path_ + "'"; }
@@ -99,15 +95,6 @@ void StateFile::check_ring_telemetry(const KeyRing& ring) const {
 }
 
 void StateFile::load(KeyRing* ring) {
-  if (memory_only_) return;  // transition: StateFile("")
-  if (dir_fd_ < 0 && !path_.empty()) {  // transition: the telemetry key from the ring
-    const KeyEntry* t = ring->telemetry_key();
-    if (t == nullptr) {
-      throw std::runtime_error(label() + " needs the node's telemetry key to authenticate it: "
-                               "load a telemetry key (evade keygen --role telemetry)");
-    }
-    attach(*t);
-  }
   require_attached("load");
   check_ring_telemetry(*ring);
   bool missing = false;
@@ -178,7 +165,6 @@ void StateFile::init(KeyRing* ring, std::int32_t active_key, std::int64_t arsn_f
 }
 
 int StateFile::save(const KeyRing& ring) noexcept {
-  if (memory_only_) return 0;  // transition: StateFile("")
   if (!ready_ || dir_fd_ < 0) return -EINVAL;
   return write_state(ring, true);
 }

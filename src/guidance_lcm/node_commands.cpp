@@ -1,249 +1,197 @@
-// The guidance node's command path (docs/SECURITY.md AUTH-*, KEY-*; docs/GUIDANCE_NODE.md
-// PLAN-IN-*): authentication of every channel the policy requires, the command inbox, the
-// anti-replay state's persistence, and the three commands (burn plan, arm/disarm, key
-// command). Members of GuidanceNode (internal/node_core.hpp); the cycle is node_core.cpp.
-#include <cmath>
+// The guidance node's command path (docs/SECURITY.md AUTH-2, AUTH-4, ARSN-1, TM-2, KEY-2;
+// docs/GUIDANCE_NODE.md PLAN-IN-*): the commands of the inbox in arrival order. Admission (the
+// cycle after arrival): the ARSN compared again, the bytes decoded, a plan's freshness, then the
+// ARSN committed (a refused command changes nothing). Execution (once the committed ARSN is on
+// disk): the plan loaded, the node armed or disarmed, a key activated or retired. Every
+// authenticated command is answered with an acknowledgement naming it (node_telemetry.cpp).
+// Members of NodeCore (internal/node_core.hpp).
+#include <cstring>
 
 #include "evade/guidance_lcm/burn_plan_convert.hpp"
-#include "evade/guidance_lcm/channels.hpp"
-#include "evade/guidance_lcm/convert.hpp"
 #include "evade/guidance_lcm/internal/node_core.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
-namespace evade::guidance_lcm {
+namespace evade::guidance_lcm::internal {
 namespace {
 
-Reason auth_reason(auth::AuthResult r) noexcept {
-  switch (r) {
-    case auth::AuthResult::kMalformed: return Reason::kTooShortForTrailer;
-    case auth::AuthResult::kUnsigned: return Reason::kUnsigned;
-    case auth::AuthResult::kUnknownKey: return Reason::kUnknownKey;
-    case auth::AuthResult::kBadMac: return Reason::kBadMac;
-    case auth::AuthResult::kStandbyKey: return Reason::kStandbyKey;
-    case auth::AuthResult::kRetiredKey: return Reason::kRetiredKey;
-    case auth::AuthResult::kWrongRole: return Reason::kWrongKeyRole;
-    case auth::AuthResult::kReplayed: return Reason::kReplayedArsn;
-    case auth::AuthResult::kOk:
-    case auth::AuthResult::kCount: break;
-  }
-  return Reason::kOk;
+using Stage = CommandInbox::Stage;
+using Ack = evade_cmd_ack_t;
+
+template <typename Msg>
+bool decode_exact(const CommandInbox::Slot& s, Msg* m) noexcept {
+  const int n = m->decode(s.data.data(), 0, static_cast<int>(s.size));
+  return n >= 0 && n == static_cast<int>(s.size);  // wrong type, truncated or trailing bytes
 }
 
-std::int8_t command_bit(int channel) noexcept {
-  switch (channel) {
-    case kCmdPlan: return evade_guidance_status_t::AUTH_PLAN;
-    case kCmdArm: return evade_guidance_status_t::AUTH_ARM;
-    default: return evade_guidance_status_t::AUTH_KEY_CMD;
-  }
-}
-
-const char* command_channel_name(int channel) noexcept {
-  switch (channel) {
-    case kCmdPlan: return kChanPlan;
-    case kCmdArm: return kChanArm;
-    default: return kChanKeyCmd;
-  }
-}
+std::int16_t detail_of(guidance::PlanReject r) noexcept { return static_cast<std::int16_t>(r); }
 
 }  // namespace
 
-// AUTH-1..3: the message's trailer, within the cycle's verification budget. Every outcome but
-// success is counted here (auth_failed, replayed, or dropped past the budget).
-bool GuidanceNode::authenticate(auth::ArsnSlot slot, const char* channel,
-                                const lcm_recv_buf_t* rbuf) noexcept {
-  if (verify_budget_left_ <= 0) {
-    counts_.add(Verdict::kDropped, Reason::kVerifyBudget);
-    return false;
+// Pass 1 admits what arrived since the last cycle; pass 2 executes, in arrival order, what is on
+// disk, and refuses what a failed write left behind (AUTH-4: commands take effect only once
+// their ARSN is on disk).
+void NodeCore::process_commands(std::int64_t now_us) noexcept {
+  for (std::size_t i = 0; i < cmd_inbox_.size(); ++i) {
+    CommandInbox::Slot& s = cmd_inbox_.at(i);
+    if (s.stage == Stage::kReceived) admit_command(s, now_us);
   }
-  --verify_budget_left_;
-  std::int32_t key_id = 0;
-  const auth::AuthResult r = keys_.verify(slot, channel, static_cast<const std::uint8_t*>(rbuf->data),
-                                          rbuf->data_size, &key_id);
-  if (r == auth::AuthResult::kOk) {
-    if (slot == auth::ArsnSlot::kCommand) {
-      ++auth_epoch_;  // the state on disk must catch up before this command takes effect
-      last_command_key_ = key_id;
+  if (state_file_ == nullptr) persisted_epoch_ = auth_epoch_;  // memory only: nothing to wait for
+  for (std::size_t i = 0; i < cmd_inbox_.size(); ++i) {
+    CommandInbox::Slot& s = cmd_inbox_.at(i);
+    if (s.stage != Stage::kAdmitted) continue;
+    if (s.epoch > persisted_epoch_) {
+      if (!(persist_failed_ && s.epoch <= failed_epoch_)) break;  // waits for the next write
+      refuse(s, Verdict::kRejected, Reason::kNotPersisted, 0, now_us);
+      continue;
     }
-    return true;
+    execute_command(s, now_us);
   }
-  counts_.add(r == auth::AuthResult::kReplayed ? Verdict::kReplayed : Verdict::kAuthFailed,
-              auth_reason(r));
-  return false;
-}
-
-// EVADE_BURN_PLAN, EVADE_ARM, EVADE_KEY_CMD (PLAN-IN-1, AUTH-2): counted like every input;
-// authenticated, then the bytes into the command inbox with the persist epoch they wait for.
-void GuidanceNode::on_command(const lcm_recv_buf_t* rbuf, const char*, void* user) noexcept {
-  auto* ctx = static_cast<SubContext*>(user);
-  GuidanceNode* self = ctx->node;
-  ++self->counts_.received;
-  if (rbuf->data_size > kMaxCommandBytes) {
-    self->counts_.add(Verdict::kRejected, Reason::kOversize);
-    return;
-  }
-  const bool required = (self->auth_required_mask_ & command_bit(ctx->channel)) != 0;
-  if (required && !self->authenticate(auth::ArsnSlot::kCommand,
-                                      command_channel_name(ctx->channel), rbuf)) {
-    return;
-  }
-  if (!self->cmd_inbox_.push(ctx->channel, self->auth_epoch_, rbuf->data, rbuf->data_size)) {
-    self->counts_.add(Verdict::kDropped);
-  }
-}
-
-int GuidanceNode::persist_auth_state() noexcept {
-  if (!state_file_.enabled()) {
-    persisted_epoch_ = auth_epoch_;
-    return 0;
-  }
-  if (!keys_.dirty() && persisted_epoch_ == auth_epoch_) return 0;
-  const std::uint64_t epoch = auth_epoch_;
-  const int rc = state_file_.save(keys_);
-  if (rc != 0) {
-    ++persist_failures_;
-    persist_failed_ = true;
-    return rc;
-  }
-  keys_.mark_persisted();
-  persisted_epoch_ = epoch;
-  return 0;
-}
-
-// Commands in arrival order, each once the state it advanced is on disk (AUTH-4). After a
-// failed write, the commands waiting on it are refused (not_persisted) rather than flown.
-void GuidanceNode::process_commands(std::int64_t now_us) noexcept {
-  if (!state_file_.enabled()) persisted_epoch_ = auth_epoch_;
-  while (!cmd_inbox_.empty()) {
-    const CommandInbox::Slot& raw = cmd_inbox_.front();
-    if (raw.epoch > persisted_epoch_) {
-      if (!persist_failed_) break;  // waits for the loop's next persist_auth_state()
-      counts_.add(Verdict::kRejected, Reason::kNotPersisted);
-    } else if (raw.channel == kCmdPlan) {
-      admit_plan(raw, now_us);
-    } else if (raw.channel == kCmdArm) {
-      admit_arm(raw, now_us);
-    } else {
-      admit_key_cmd(raw, now_us);
-    }
-    cmd_inbox_.pop();
-  }
+  if (persist_failed_) fail_waiting_acks();
   persist_failed_ = false;
+  cmd_inbox_.compact();
 }
 
-bool GuidanceNode::command_fresh(std::int64_t utime, std::int64_t now_us) noexcept {
-  if (utime > now_us + future_us_) {
+// Decodes the slot into its type's buffer. False (counted and answered) when it does not.
+bool NodeCore::decode_command(CommandInbox::Slot& s) noexcept {
+  switch (s.input) {
+    case Input::kPlan: return decode_exact(s, &plan_msg_);
+    case Input::kArm: return decode_exact(s, &arm_msg_);
+    default: return decode_exact(s, &key_msg_);  // the inbox holds only command rows
+  }
+}
+
+void NodeCore::admit_command(CommandInbox::Slot& s, std::int64_t now_us) noexcept {
+  if (s.authenticated && !(s.arsn > keys_.last_arsn(s.key_id, auth::ArsnSlot::kCommand))) {
+    refuse(s, Verdict::kReplayed, Reason::kReplayedArsn, 0, now_us);  // a reordered copy
+    return;
+  }
+  if (!decode_command(s)) {
+    refuse(s, Verdict::kRejected, Reason::kDecodeFailed, 0, now_us);
+    return;
+  }
+  // A plan's burn times are absolute in the node's time base: a plan stamped in the node's
+  // future comes from a ground clock that is ahead, and its times would be wrong (refused, the
+  // ARSN not advanced). Arm, disarm and key commands carry no such times: they are ordered by
+  // their ARSN alone, so a ground with a wrong clock can still disarm (issue 40, row 9).
+  if (s.input == Input::kPlan && plan_msg_.utime > now_us + future_us_) {
+    refuse(s, Verdict::kRejected, Reason::kFromFuture, 0, now_us);
+    return;
+  }
+  if (!s.authenticated) {  // the policy does not require it: nothing to commit, nobody to answer
+    const bool ok = s.input != Input::kArm || admit_unsigned_arm(now_us);
+    s.stage = ok ? Stage::kAdmitted : Stage::kDone;  // epoch 0: nothing to wait for
+    return;
+  }
+  (void)keys_.commit(s.key_id, auth::ArsnSlot::kCommand, s.arsn);  // compared above: advances
+  last_command_key_ = s.key_id;
+  s.epoch = ++auth_epoch_;  // the state on disk must catch up before this command takes effect
+  s.stage = Stage::kAdmitted;
+}
+
+// An arm the policy lets through unsigned is ordered like every input: not from the future, not
+// stale, its seq after the last one (NODE-IN-2..4). Counted when refused.
+bool NodeCore::admit_unsigned_arm(std::int64_t now_us) noexcept {
+  if (arm_msg_.utime > now_us + future_us_) {
     counts_.add(Verdict::kRejected, Reason::kFromFuture);
     return false;
   }
-  return true;
+  if (arm_msg_.utime < now_us - stale_us_) {
+    counts_.add(Verdict::kStale, Reason::kStaleUtime);
+    return false;
+  }
+  return admit_seq(Input::kArm, arm_msg_.seq, arm_msg_.utime);
 }
 
-// One plan message: decode, time and field checks, then the executor's validation. Every
-// message ends consumed (accepted), rejected or stale (plan id not newer). The outcome is the
-// acknowledgement the ground waits for (status plan_ack_id / plan_ack_result), except for a
-// repeat of the plan in force (a retransmission), which leaves its acceptance standing.
-void GuidanceNode::admit_plan(const CommandInbox::Slot& raw, std::int64_t now_us) noexcept {
-  const int n = plan_msg_.decode(raw.data.data(), 0, static_cast<int>(raw.size));
-  if (n < 0 || n != static_cast<int>(raw.size)) {
-    counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
+void NodeCore::execute_command(CommandInbox::Slot& s, std::int64_t now_us) noexcept {
+  // KEY-2: a key retired by a command executed just before (received in the same drain) no
+  // longer commands, although its message was authentic when it arrived.
+  const auth::KeyEntry* signer = s.authenticated ? keys_.find(s.key_id) : nullptr;
+  if (signer != nullptr && signer->state != auth::KeyState::kActive) {
+    refuse(s, Verdict::kAuthFailed,
+           signer->state == auth::KeyState::kRetired ? Reason::kRetiredKey : Reason::kStandbyKey,
+           0, now_us);
     return;
   }
-  if (!command_fresh(plan_msg_.utime, now_us)) return;
+  if (!decode_command(s)) {  // decoded at admission: the same bytes decode again
+    refuse(s, Verdict::kRejected, Reason::kDecodeFailed, 0, now_us);
+    return;
+  }
+  switch (s.input) {
+    case Input::kPlan: execute_plan(s, now_us); break;
+    case Input::kArm: execute_arm(s, now_us); break;
+    default: execute_key_cmd(s, now_us); break;
+  }
+  s.stage = Stage::kDone;
+}
+
+// One plan: the very plan in force sent again (a retransmission whose first copy was accepted)
+// changes nothing and is answered as such; anything else goes through the message edge and the
+// executor's validation. Every plan ends consumed (accepted), rejected, or stale (plan id not
+// newer, or the plan in force again).
+void NodeCore::execute_plan(CommandInbox::Slot& s, std::int64_t now_us) noexcept {
+  const std::size_t body = s.size - (s.authenticated ? auth::kTrailerBytes : 0U);
+  if (plan_in_force_size_ == s.size && plan_msg_.seq == plan_exec_.status().plan_id &&
+      std::memcmp(plan_in_force_.data(), s.data.data(), body) == 0) {
+    counts_.add(Verdict::kStale, Reason::kDuplicateSeq);
+    ack(s, Ack::OUTCOME_ALREADY_IN_FORCE, Reason::kOk, 0, 0, now_us);
+    return;
+  }
   guidance::PlanReject r = burn_plan_message_reject(plan_msg_);
   if (r != guidance::PlanReject::kNone) {
     plan_exec_.count_rejection(r);
   } else if (from_lcm(plan_msg_, &plan_)) {
     r = plan_exec_.load(plan_, now_us, armed_, law_.status().dv_used_mps);
   }
-  const bool repeat = r == guidance::PlanReject::kNotNewer && plan_msg_.seq == plan_ack_id_;
-  if (!repeat) {
-    plan_ack_id_ = plan_msg_.seq;
-    plan_ack_result_ = static_cast<std::int8_t>(r);  // PlanReject codes are the PLAN_REJECT_* values
-  }
+  plan_ack_id_ = plan_msg_.seq;
+  plan_ack_result_ = static_cast<std::int8_t>(r);  // PlanReject codes are the PLAN_REJECT_* values
   if (r == guidance::PlanReject::kNone) {
+    std::memcpy(plan_in_force_.data(), s.data.data(), s.size);
+    plan_in_force_size_ = s.size;
     counts_.add(Verdict::kConsumed);
-  } else if (r == guidance::PlanReject::kNotNewer) {
-    counts_.add(Verdict::kStale, Reason::kOutOfOrderSeq);
-  } else {
-    counts_.add(Verdict::kRejected, r == guidance::PlanReject::kNotFinite ? Reason::kNotFinite
-                                                                          : Reason::kOutOfRange);
-  }
-}
-
-// An authenticated arm is ordered by its ARSN (checked in the callback), so its seq is not
-// tracked: the ground's seq need not continue the last one. An unauthenticated arm (policy
-// off) goes through the seq and utime admission of every input.
-void GuidanceNode::admit_arm(const CommandInbox::Slot& raw, std::int64_t now_us) noexcept {
-  if ((auth_required_mask_ & evade_guidance_status_t::AUTH_ARM) == 0) {
-    if (!admit(kInArm, raw.data.data(), raw.size, now_us, &arm_msg_)) return;
-  } else {
-    const int n = arm_msg_.decode(raw.data.data(), 0, static_cast<int>(raw.size));
-    if (n < 0 || n != static_cast<int>(raw.size)) {
-      counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
-      return;
-    }
-    if (!command_fresh(arm_msg_.utime, now_us)) return;
-    if (arm_msg_.utime < now_us - stale_us_) {
-      counts_.add(Verdict::kStale, Reason::kStaleUtime);
-      return;
-    }
-  }
-  counts_.add(Verdict::kConsumed);
-  armed_ = arm_msg_.armed != 0;
-}
-
-// KEY-2: activate or retire a key. The key command's own signer was checked in the callback.
-void GuidanceNode::admit_key_cmd(const CommandInbox::Slot& raw, std::int64_t now_us) noexcept {
-  const int n = key_msg_.decode(raw.data.data(), 0, static_cast<int>(raw.size));
-  if (n < 0 || n != static_cast<int>(raw.size)) {
-    counts_.add(Verdict::kRejected, Reason::kDecodeFailed);
+    ack(s, Ack::OUTCOME_ACCEPTED, Reason::kOk, 0, 0, now_us);
     return;
   }
-  if (!command_fresh(key_msg_.utime, now_us)) return;
+  const Reason why = r == guidance::PlanReject::kNotNewer    ? Reason::kOutOfOrderSeq
+                     : r == guidance::PlanReject::kNotFinite ? Reason::kNotFinite
+                                                             : Reason::kOutOfRange;
+  counts_.add(r == guidance::PlanReject::kNotNewer ? Verdict::kStale : Verdict::kRejected, why);
+  ack(s, Ack::OUTCOME_REFUSED, why, detail_of(r), 0, now_us);
+}
+
+void NodeCore::execute_arm(CommandInbox::Slot& s, std::int64_t now_us) noexcept {
+  armed_ = arm_msg_.armed != 0;
+  counts_.add(Verdict::kConsumed);
+  ack(s, Ack::OUTCOME_ACCEPTED, Reason::kOk, 0, 0, now_us);
+}
+
+// KEY-2: activate or retire a key. The key command's own signer was checked at receipt. A change
+// of a key's state is answered once it is on disk (its acknowledgement waits for the next write).
+void NodeCore::execute_key_cmd(CommandInbox::Slot& s, std::int64_t now_us) noexcept {
   key_cmd_last_seq_ = key_msg_.seq;
   if (validate(key_msg_) != Reason::kOk) {
     key_cmd_last_result_ = auth::KeyCmdResult::kBadOp;
     counts_.add(Verdict::kRejected, Reason::kOutOfRange);
+    ack(s, Ack::OUTCOME_REFUSED, Reason::kOutOfRange,
+        static_cast<std::int16_t>(key_cmd_last_result_), 0, now_us);
     return;
   }
   key_cmd_last_result_ = key_msg_.op == evade_key_cmd_t::OP_ACTIVATE ? keys_.activate(key_msg_.key_id)
                                                                      : keys_.retire(key_msg_.key_id);
-  counts_.add(key_cmd_last_result_ == auth::KeyCmdResult::kDone ? Verdict::kConsumed
-                                                                : Verdict::kRejected,
-              key_cmd_last_result_ == auth::KeyCmdResult::kDone ? Reason::kOk
-                                                                : Reason::kOutOfRange);
+  const auto detail = static_cast<std::int16_t>(key_cmd_last_result_);
+  if (key_cmd_last_result_ != auth::KeyCmdResult::kDone) {
+    counts_.add(Verdict::kRejected, Reason::kOutOfRange);
+    ack(s, Ack::OUTCOME_REFUSED, Reason::kOutOfRange, detail, 0, now_us);
+    return;
+  }
+  counts_.add(Verdict::kConsumed);
+  ack(s, Ack::OUTCOME_ACCEPTED, Reason::kOk, detail, keys_.dirty() ? ++auth_epoch_ : 0, now_us);
 }
 
-void GuidanceNode::fill_status(std::int64_t now_us) noexcept {
-  to_lcm(law_.status(), &status_msg_);
-  status_msg_.utime = now_us;
-  status_msg_.seq = ++status_seq_;
-  status_msg_.armed = lcm_bool(armed_);
-  status_msg_.n_received = counts_.received;
-  status_msg_.n_consumed = counts_.consumed;
-  status_msg_.n_rejected = counts_.rejected;
-  status_msg_.n_stale = counts_.stale;
-  status_msg_.n_superseded = counts_.superseded;
-  status_msg_.n_dropped = counts_.dropped;
-  status_msg_.n_seq_gaps = counts_.seq_gaps;
-  status_msg_.cycles = cycles_;
-  status_msg_.watchdog_cycles = law_.status().watchdog_cycles;
-  status_msg_.overruns = compute_.overruns();
-  status_msg_.cycle_p50_us = compute_.quantile(0.50);
-  status_msg_.cycle_p99_us = compute_.quantile(0.99);
-  status_msg_.cycle_max_us = compute_.max_us();
-  to_lcm(plan_exec_.status(), &status_msg_);
-  status_msg_.n_auth_failed = counts_.auth_failed;
-  status_msg_.n_replayed = counts_.replayed;
-  status_msg_.plan_ack_id = plan_ack_id_;
-  status_msg_.plan_ack_result = plan_ack_result_;
-  status_msg_.auth_required = auth_required_mask_;
-  status_msg_.auth_active_command_keys = static_cast<std::int8_t>(keys_.active_command_keys());  // <= 8 keys
-  status_msg_.auth_last_key_id = last_command_key_;
-  status_msg_.auth_state_persist_failures = persist_failures_;
-  status_msg_.key_cmd_last_seq = key_cmd_last_seq_;
-  status_msg_.key_cmd_last_result = static_cast<std::int8_t>(key_cmd_last_result_);  // 0..5
-  if (status_pub_.publish(status_msg_) != 0) ++publish_failures_;
+void NodeCore::refuse(CommandInbox::Slot& s, Verdict v, Reason r, std::int16_t detail,
+                      std::int64_t now_us) noexcept {
+  counts_.add(v, r);
+  ack(s, Ack::OUTCOME_REFUSED, r, detail, 0, now_us);
+  s.stage = Stage::kDone;
 }
 
-}  // namespace evade::guidance_lcm
+}  // namespace evade::guidance_lcm::internal

@@ -29,9 +29,12 @@ const Param<C> kRows[] = {
                      "EVADE_ANGLES messages must be signed by a sensor key (AUTH-3)"),
     EVADE_PARAM_BOOL(C, auth.clock_required,
                      "EVADE_SIM_CLOCK ticks must be signed by a sensor key (AUTH-3)"),
-    EVADE_PARAM_INT(C, auth.max_verify_per_cycle, "-", 1, 100000,
-                    "MAC verifications per cycle; messages past it are dropped and counted "
-                    "(verify_budget, AUTH-5)"),
+    EVADE_PARAM_INT(C, auth.verify_per_cycle_command, "-", 1, 100000,
+                    "MAC verifications per cycle on each command channel (plan, arm, key "
+                    "command); messages past it are dropped and counted (verify_budget, AUTH-5)"),
+    EVADE_PARAM_INT(C, auth.verify_per_cycle_sensor, "-", 1, 100000,
+                    "MAC verifications per cycle on each sensor channel (nav, angles, sim "
+                    "clock); messages past it are dropped and counted (verify_budget, AUTH-5)"),
 };
 
 }  // namespace

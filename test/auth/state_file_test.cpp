@@ -633,30 +633,5 @@ TEST_F(AuthStateFile, AMovedStateFileKeepsWorkingAndTheMovedFromOneRefuses) {
   EXPECT_EQ(c.writes(), 3);
 }
 
-// ---- the transition the node uses until it constructs StateFile(path, telemetry) ----
-
-TEST_F(AuthStateFile, TransitionMemoryOnlyDoesNothing) {
-  StateFile f("");
-  EXPECT_FALSE(f.enabled());
-  KeyRing r = ring();
-  EXPECT_NO_THROW(f.load(&r));
-  EXPECT_EQ(f.save(r), 0);
-  EXPECT_EQ(state(r, 1), KeyState::kStandby);
-}
-
-TEST_F(AuthStateFile, TransitionTakesTheTelemetryKeyFromTheRingAndRefusesWithoutOne) {
-  (void)initialized();
-  StateFile f(state_);
-  EXPECT_TRUE(f.enabled());
-  KeyRing r = ring();
-  f.load(&r);
-  EXPECT_EQ(state(r, 1), KeyState::kActive);
-  EXPECT_EQ(f.save(r), 0);
-  KeyRing no_tel;
-  ASSERT_EQ(no_tel.add(1, KeyRole::kCommand, keys_.at(1), KeyState::kStandby), nullptr);
-  const std::string text = runtime_error_text([&] { StateFile(state_).load(&no_tel); });
-  EXPECT_NE(text.find("needs the node's telemetry key"), std::string::npos) << text;
-}
-
 }  // namespace
 }  // namespace evade::auth

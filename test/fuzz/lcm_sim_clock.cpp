@@ -1,8 +1,8 @@
 // Fuzz harness: bytes received on EVADE_SIM_CLOCK by a node in lockstep (NODE-LS-1), which
 // runs one cycle at each accepted tick's utime, as apps/evade_guidance_node's lockstep loop
-// does (drain, take the pending tick, run the cycle). Ticks are triggers, not inputs: they
-// are not in the input accounting. Checked: the input accounting identity (NODE-IN-1) after every
-// cycle, with good nav and angles beside the ticks; a cycle runs only for a tick that decodes exactly,
+// does (drain, take the pending tick, run the cycle). Ticks are inputs like the others: each
+// is in the input accounting (a tick taken is consumed). Checked: the input accounting identity
+// (NODE-IN-1) after every cycle, with good nav and angles beside the ticks; a cycle runs only for a tick that decodes exactly,
 // validates and is newer than the last one (never more cycles than such ticks); each
 // command carries its tick's utime and seq +1; the command's limits (lcm_input_harness.hpp).
 // Framing as in lcm_input_harness.hpp: `advance` counts good-traffic rounds here.
@@ -32,9 +32,8 @@ int run(const std::uint8_t* data, std::size_t size) {
       if (n >= 0 && n == static_cast<int>(rec[next].size) &&
           evade::guidance_lcm::validate(tick) == evade::guidance_lcm::Reason::kOk)
         ++plausible_ticks;
-      // Not Publisher::send_bytes: ticks are not input messages (published() counts those).
-      lcm_publish(dut.lcm, evade::guidance_lcm::kChanClock, rec[next].bytes,
-                  rec[next].size);
+      // Publisher::send_bytes: a tick is an input message (published() counts it).
+      dut.pub.send_bytes(evade::guidance_lcm::kChanClock, rec[next].bytes, rec[next].size);
     }
     dut.node.drain();
     std::int64_t tick_utime = 0;

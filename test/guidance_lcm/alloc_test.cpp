@@ -109,9 +109,10 @@ TEST(NodeAllocation, TenThousandCyclesAllocateNothing) {
   EXPECT_GT(thrusting, 0) << "the cycles exercised the evading path";
 }
 
-// NODE-RT-1 with authentication (docs/SECURITY.md AUTH-6): every sensor message signed and
-// verified, signed plans, key commands, replays and forgeries now and then, and the
-// persisted state written between cycles (into a scratch file): still no allocation.
+// NODE-RT-1 with authentication (docs/SECURITY.md AUTH-6, TM-1): every sensor message signed
+// and verified, signed plans, key commands, replays and forgeries now and then, every
+// acknowledgement and every status signed with the telemetry key, and the persisted state
+// written between cycles (into a scratch file): still no allocation.
 TEST(NodeAllocation, AuthenticatedCyclesAndTheStateWriteAllocateNothing) {
   constexpr int kCycles = 5000;
   char dir_tmpl[] = "/tmp/evade-alloc-XXXXXX";
@@ -121,7 +122,10 @@ TEST(NodeAllocation, AuthenticatedCyclesAndTheStateWriteAllocateNothing) {
   cfg.auth.nav_required = cfg.auth.angles_required = true;
   NodeSecurity sec = test_security();
   sec.state_path = state;
+  sec.init_active_key = 1;
   Rig rig(cfg, kCycles + 100, sec);
+  std::uint8_t replay[1024];
+  int replay_size = 0;
   std::int64_t t = 1000000;
   std::int64_t seq = 1;
   for (int k = 0; k < 20; ++k, t += kPeriodUs) rig.good_cycle(t, seq++);  // warm-up
@@ -143,6 +147,22 @@ TEST(NodeAllocation, AuthenticatedCyclesAndTheStateWriteAllocateNothing) {
       rig.pub.send(kChanNav, plan);  // wrong type, unsigned, on a sensor channel
       rig.pub.set_signing(true);
     }
+    if (k % 100 == 7) {  // a key command (activating the active key: done, answered)
+      evade_key_cmd_t kc{};
+      kc.utime = t;
+      kc.seq = k;
+      kc.op = evade_key_cmd_t::OP_ACTIVATE;
+      kc.key_id = 1;
+      rig.pub.send(kChanKeyCmd, kc);
+    }
+    if (k % 100 == 9) {  // a replay of signed bytes: refused at receipt, answered
+      if (replay_size == 0) {
+        const SigningKey ck = test_command_key();
+        evade_burn_plan_t p = plan;
+        replay_size = encode_signed(&p, kChanPlan, ck, 1, replay, static_cast<int>(sizeof(replay)));
+      }
+      rig.pub.send_bytes(kChanPlan, replay, static_cast<unsigned>(replay_size));
+    }
     rig.good_cycle(t, seq++);
     EXPECT_EQ(rig.node.persist_auth_state(), 0);
   }
@@ -152,6 +172,9 @@ TEST(NodeAllocation, AuthenticatedCyclesAndTheStateWriteAllocateNothing) {
   EXPECT_GT(rig.node.counts().auth_failed, 0);
   EXPECT_GT(rig.node.counts().consumed, 2 * kCycles) << "signed sensor messages were used";
   EXPECT_GT(rig.node.plan_executor().status().accepted, 0);
+  EXPECT_GE(rig.node.acks_published(), 3 * (kCycles / 100)) << "plans, key commands, replays answered";
+  EXPECT_EQ(rig.node.acks_unsent(), 0);
+  EXPECT_GT(rig.node.counts().replayed, 0);
   (void)std::remove(state.c_str());
   (void)rmdir(dir_tmpl);
 }

@@ -16,9 +16,20 @@
 
 #include <lcm/lcm.h>
 
+#include "evade/evade_angles_t.hpp"
+#include "evade/evade_arm_t.hpp"
+#include "evade/evade_burn_plan_t.hpp"
+#include "evade/evade_cmd_ack_t.hpp"
+#include "evade/evade_key_cmd_t.hpp"
+#include "evade/evade_nav_state_t.hpp"
+#include "evade/evade_sim_clock_t.hpp"
 #include "evade/guidance/los_geometry.hpp"
 #include "evade/guidance_lcm/channels.hpp"
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
+#include "evade/guidance_lcm/internal/ack_outbox.hpp"
+#include "evade/guidance_lcm/internal/command_inbox.hpp"
+#include "evade/guidance_lcm/internal/input_queue.hpp"
+#include "evade/guidance_lcm/internal/seq_tracker.hpp"
 #include "evade/guidance_lcm/signed_encode.hpp"
 #include "evade/guidance_lcm/validate.hpp"
 
@@ -66,14 +77,17 @@ inline SigningKey test_key(std::int32_t id, std::uint8_t fill) {
 }
 inline SigningKey test_command_key() { return test_key(1, 0x11); }
 inline SigningKey test_sensor_key() { return test_key(2, 0x5a); }
+inline SigningKey test_telemetry_key() { return test_key(3, 0x33); }
 
-/// The node's side: both keys loaded and active, memory-only state.
+/// The node's side: the three keys loaded and active, memory-only state.
 inline NodeSecurity test_security() {
   NodeSecurity sec;
   const SigningKey c = test_command_key();
   const SigningKey s = test_sensor_key();
+  const SigningKey t = test_telemetry_key();
   (void)sec.keys.add(c.id, auth::KeyRole::kCommand, c.key, auth::KeyState::kActive);
   (void)sec.keys.add(s.id, auth::KeyRole::kSensor, s.key, auth::KeyState::kActive);
+  (void)sec.keys.add(t.id, auth::KeyRole::kTelemetry, t.key, auth::KeyState::kActive);
   return sec;
 }
 
@@ -165,7 +179,7 @@ using LcmPtr = std::unique_ptr<lcm_t, LcmDeleter>;
 /// memq:// node + publisher + recorder.
 struct Rig {
   explicit Rig(NodeConfig cfg = {}, std::size_t max_cmds = 100000,
-               const NodeSecurity& sec = test_security())
+               NodeSecurity sec = test_security())
       : lcm(lcm_create("memq://")), node(lcm.get(), cfg, nullptr, sec), pub(lcm.get()),
         rec(lcm.get(), max_cmds) {}
 

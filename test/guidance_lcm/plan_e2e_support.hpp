@@ -12,7 +12,7 @@
 #include "evade/dynamics/hcw.hpp"
 #include "evade/guidance_lcm/channels.hpp"
 #include "evade/guidance_lcm/convert.hpp"
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
 #include "evade/lcm_link/burn_plan_publisher.hpp"
 #include "evade/sim/guidance_endpoint.hpp"
 #include "guidance_lcm/node_harness.hpp"
@@ -51,8 +51,10 @@ class NodeEndpoint final : public sim::GuidanceEndpoint {
 
 // The stamp of a plan signed with the test command key.
 inline lcm_link::PlanStamp signed_stamp() {
+  static std::int64_t arsn = 0;  // the ground's counter: each signed plan takes the next ARSN
   lcm_link::PlanStamp s;
   s.key = guidance_lcm::test::test_command_key();
+  s.arsn = ++arsn;
   return s;
 }
 

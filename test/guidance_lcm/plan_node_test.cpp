@@ -218,13 +218,17 @@ TEST(NodePlan, EachRejectionReasonIsCountedInTheStatus) {
     EXPECT_EQ(s.plan_last_reject, cases[i].code) << i;
     EXPECT_EQ(s.plan_n_rejected[cases[i].code], 1) << i;
   }
-  // Not newer: accept 30, then 30 again and 29.
+  // Not newer: accept 30, then another plan 30 and a 29; the very plan 30 sent again (a
+  // retransmission, signed afresh) is the plan in force, not a rejection.
   rig.pub.send(kChanPlan, plan_msg(30, 5.0));
-  rig.pub.send(kChanPlan, plan_msg(30, 5.0));
+  rig.pub.send(kChanPlan, plan_msg(30, 5.5));
   rig.pub.send(kChanPlan, plan_msg(29, 5.0));
+  rig.pub.send(kChanPlan, plan_msg(30, 5.0));
   nav_cycle(rig, 20);
   EXPECT_EQ(rig.node.last_status().plan_n_rejected[S::PLAN_REJECT_NOT_NEWER], 2);
   EXPECT_EQ(rig.node.last_status().plan_id, 30);
+  EXPECT_EQ(rig.node.last_ack().outcome, evade_cmd_ack_t::OUTCOME_ALREADY_IN_FORCE);
+  EXPECT_EQ(rig.node.counts().by_reason[static_cast<int>(Reason::kDuplicateSeq)], 1);
   // Disarmed: the arm message cancels plan 30, then plan 31 is refused.
   evade_arm_t arm{};
   arm.utime = kT0 + 21 * kPeriodUs;

@@ -17,8 +17,11 @@
 #include <utility>
 #include <vector>
 
+#include "evade/evade_arm_t.hpp"
+#include "evade/evade_angles_t.hpp"
+#include "evade/evade_nav_state_t.hpp"
 #include "evade/guidance_lcm/channels.hpp"
-#include "evade/guidance_lcm/internal/node_core.hpp"
+#include "evade/guidance_lcm/guidance_node.hpp"
 
 extern "C" {
 lcm_subscription_t* __real_lcm_subscribe(lcm_t* lcm, const char* channel,

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "evade/guidance_lcm/convert.hpp"
-#include "evade/guidance_lcm/internal/cycle_stats.hpp"
+#include "evade/guidance_lcm/cycle_stats.hpp"
 #include "evade/guidance_lcm/internal/input_queue.hpp"
 #include "evade/guidance_lcm/internal/seq_tracker.hpp"
 #include "evade/guidance_lcm/lcm_url.hpp"
@@ -415,7 +415,7 @@ TEST(SeqTracker, ExtremeSeqValuesNeitherOverflowNorGiveNegativeGaps) {
 TEST(InputQueue, DropsOldestWhenFull) {
   InputQueue q(3);
   for (std::uint8_t i = 0; i < 5; ++i) {
-    const bool kept = q.push(0, &i, 1);
+    const bool kept = q.push(Input::kAngles, 0, 0, &i, 1);
     EXPECT_EQ(kept, i < 3);
   }
   ASSERT_EQ(q.size(), 3u);

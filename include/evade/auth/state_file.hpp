@@ -96,15 +96,6 @@ class StateFile {  // move-only (it holds the directory's descriptor)
   const std::string& path() const noexcept { return path_; }
   std::int64_t writes() const noexcept { return writes_; }  ///< the file's write counter
 
-  // ---- Transition, until the node constructs StateFile(path, telemetry) and calls init() on
-  // --auth-init (src/guidance_lcm is being rewritten on main; remove these then). ----
-
-  /// path empty: memory only (load and save do nothing, enabled() is false). Otherwise load()
-  /// takes the telemetry key from its ring (none loaded: it throws) and is the load above.
-  explicit StateFile(std::string path);
-  /// False only for the memory-only transition object.
-  bool enabled() const noexcept { return !memory_only_; }
-
  private:
   void attach(const KeyEntry& telemetry);
   void take(StateFile* other) noexcept;
@@ -125,7 +116,6 @@ class StateFile {  // move-only (it holds the directory's descriptor)
   std::size_t n_kept_ = 0;
   std::int64_t writes_ = 0;
   bool ready_ = false;        ///< load() or init() succeeded: save() may write
-  bool memory_only_ = false;  ///< transition: StateFile("")
 };
 
 }  // namespace evade::auth

@@ -12,5 +12,6 @@ inline constexpr const char* kChanClock = "EVADE_SIM_CLOCK";      ///< evade_sim
 inline constexpr const char* kChanKeyCmd = "EVADE_KEY_CMD";       ///< evade_key_cmd_t, in
 inline constexpr const char* kChanCmd = "EVADE_THRUST_CMD";       ///< evade_thrust_cmd_t, out
 inline constexpr const char* kChanStatus = "EVADE_GUID_STATUS";   ///< evade_guidance_status_t, out
+inline constexpr const char* kChanCmdAck = "EVADE_CMD_ACK";       ///< evade_cmd_ack_t, out
 
 }  // namespace evade::guidance_lcm

@@ -42,6 +42,9 @@ enum class Reason : std::uint8_t {
   kReplayedArsn,      ///< auth: ARSN not above the last accepted (verdict kReplayed)
   kVerifyBudget,      ///< the cycle's MAC verification budget was spent (verdict kDropped)
   kNotPersisted,      ///< a command whose ARSN could not be written to disk (verdict kRejected)
+  kQueueFull,         ///< the bounded input queue was full: the oldest message made room (kDropped)
+  kInboxFull,         ///< the command inbox was full: the oldest command made room (kDropped)
+  kStopped,           ///< still queued or waiting when the node stopped (kDropped)
   kCount
 };
 

@@ -1,5 +1,7 @@
-// Bounded queue of raw input messages (fixed slots, no allocation after construction).
-// The LCM receive callback only copies bytes in; the node cycle decodes and validates.
+// Internal (not installed): bounded queue of raw sensor messages (fixed slots, no allocation
+// after construction). The LCM receive callback only authenticates (when the policy requires it)
+// and copies bytes in, with the trailer's key id and ARSN; the node cycle decodes, validates,
+// checks freshness and only then commits the ARSN (docs/SECURITY.md ARSN-1).
 // When full, the OLDEST entry is discarded and counted as dropped (docs/GUIDANCE_NODE.md
 // NODE-IN-3): for guidance the newest data matter most.
 #pragma once
@@ -10,13 +12,14 @@
 #include <cstring>
 #include <vector>
 
+#include "evade/guidance_lcm/node_inputs.hpp"
+
 namespace evade::guidance_lcm {
 
-/// Largest input message we accept, in bytes (evade_angles_t encodes to ~120 B).
-inline constexpr std::size_t kMaxInputBytes = 256;
-
 struct RawMessage {
-  int channel = 0;              ///< index of the input channel it arrived on
+  Input channel = Input::kAngles;  ///< the input it arrived on
+  std::int32_t key_id = 0;      ///< authenticated: the signer (0: the policy does not require it)
+  std::int64_t arsn = 0;        ///< authenticated: the trailer's ARSN, committed on admission
   std::uint32_t size = 0;       ///< bytes used in data
   std::array<std::uint8_t, kMaxInputBytes> data{};
 };
@@ -32,8 +35,8 @@ class InputQueue {
   /// Copies a message in. Returns false if the oldest entry had to be discarded to make
   /// room (the caller counts it as dropped; *dropped_channel, when given, receives its
   /// channel). size must be <= kMaxInputBytes.
-  bool push(int channel, const void* bytes, std::uint32_t size,
-            int* dropped_channel = nullptr) noexcept {
+  bool push(Input channel, std::int32_t key_id, std::int64_t arsn, const void* bytes,
+            std::uint32_t size, Input* dropped_channel = nullptr) noexcept {
     bool kept_all = true;
     if (size_ == slots_.size()) {  // drop oldest
       if (dropped_channel != nullptr) *dropped_channel = slots_[head_].channel;
@@ -43,6 +46,8 @@ class InputQueue {
     }
     RawMessage& m = slots_[(head_ + size_) % slots_.size()];
     m.channel = channel;
+    m.key_id = key_id;
+    m.arsn = arsn;
     m.size = size;
     std::memcpy(m.data.data(), bytes, size);
     ++size_;

@@ -1,6 +1,7 @@
-// Cycle-time statistics over a fixed-size ring (no allocation after construction):
-// p50/p99 over the last kWindow samples, max and count since start, overruns. Used for the
-// node's compute time and its wake-up latency (docs/GUIDANCE_NODE.md NODE-RT-3).
+// Cycle-time statistics over a fixed-size ring (no allocation after construction): p50/p99
+// over the last kWindow samples, max and count since start, overruns. Used for the node's
+// compute time and its wake-up latency (docs/GUIDANCE_NODE.md NODE-RT-3); public, since the
+// node reports them (guidance_node.hpp).
 #pragma once
 
 #include <algorithm>
