@@ -20,10 +20,11 @@ struct ArmOptions {
 
 int run_arm(const ArmOptions& o) {
   if (o.arm == o.disarm) throw std::invalid_argument("give exactly one of --arm and --disarm");
-  const evade::guidance_lcm::SigningKey key = evade::lcm_link::load_command_key(o.up.sign.key_file, o.up.sign.key_id);
+  evade::cli::GroundSigner signer(o.up.sign);
   const evade::lcm_link::UplinkResult r =
-      evade::lcm_link::uplink_arm(evade::cli::uplink_options(o.up.sign, o.up.lcm_url), o.arm, key);
-  return evade::cli::report_uplink(o.arm ? "arm" : "disarm", r, key.id, o.up.json);
+      evade::lcm_link::uplink_arm(evade::cli::uplink_options(o.up.sign, o.up.lcm_url), o.arm,
+                                  signer.keys(), signer.arsn());
+  return evade::cli::report_uplink(o.arm ? "arm" : "disarm", r, signer.keys().command.id, o.up.json);
 }
 
 evade::cli::Runner setup(CLI::App& app) {

@@ -23,13 +23,13 @@ int run_key(const KeyOptions& o) {
   if ((o.activate > 0) == (o.retire > 0)) {
     throw std::invalid_argument("give exactly one of --activate N and --retire N");
   }
-  const evade::guidance_lcm::SigningKey key = evade::lcm_link::load_command_key(o.up.sign.key_file, o.up.sign.key_id);
+  evade::cli::GroundSigner signer(o.up.sign);
   const bool act = o.activate > 0;
   const evade::lcm_link::UplinkResult r = evade::lcm_link::uplink_key_cmd(
       evade::cli::uplink_options(o.up.sign, o.up.lcm_url),
       act ? evade::evade_key_cmd_t::OP_ACTIVATE : evade::evade_key_cmd_t::OP_RETIRE,
-      act ? o.activate : o.retire, key);
-  return evade::cli::report_uplink(act ? "activate key" : "retire key", r, key.id, o.up.json);
+      act ? o.activate : o.retire, signer.keys(), signer.arsn());
+  return evade::cli::report_uplink(act ? "activate key" : "retire key", r, signer.keys().command.id, o.up.json);
 }
 
 evade::cli::Runner setup(CLI::App& app) {

@@ -17,7 +17,9 @@ void add_plan_output_options(CLI::App& app, PlanOutputOptions& o) {
   app.add_flag("--publish", o.publish, "publish the plan as evade_burn_plan_t on LCM");
   app.add_option("--lcm-url", o.lcm_url, "LCM URL for --publish (default: LCM_DEFAULT_URL)");
   app.add_option("--channel", o.channel, "LCM channel for --publish")->capture_default_str();
-  app.add_option("--seq", o.seq, "seq field (plan id) of the published plan [-]")
+  app.add_option("--seq", o.seq,
+                 "seq field (plan id) of the published plan [-] (0: with --key, one above the "
+                 "plan in force in the node's signed status)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--epoch-utime", o.epoch_utime_us,
                  "utime [us] of the plan's t = 0 (default: the publish time)")
@@ -55,13 +57,17 @@ nlohmann::json published_json(const PlanOutputOptions& o, const BurnPlan& plan,
 
 int uplink_signed(const PlanOutputOptions& o, const BurnPlan& plan,
                   const lcm_link::PlanStamp& stamp, nlohmann::json* j) {
-  const guidance_lcm::SigningKey key = lcm_link::load_command_key(o.sign.key_file, o.sign.key_id);
+  GroundSigner signer(o.sign);
   const lcm_link::UplinkOptions u = uplink_options(o.sign, o.lcm_url);
-  const lcm_link::UplinkResult r = lcm_link::uplink_plan(u, o.channel, plan, o.seq, stamp, key);
+  const lcm_link::UplinkResult r =
+      lcm_link::uplink_plan(u, o.channel, plan, o.seq, stamp, signer.keys(), signer.arsn());
   (*j)["published"] = published_json(o, plan, r.first_utime);
-  (*j)["uplink"] = lcm_link::to_json(r, key.id);
-  (void)std::fprintf(stderr, "evade: plan %ld %s (%s) after %d transmission(s)\n", o.seq,
-                     lcm_link::outcome_name(r.outcome), r.reason.c_str(), r.transmissions);
+  (*j)["published"]["seq"] = r.plan_id;
+  (*j)["uplink"] = lcm_link::to_json(r, signer.keys().command.id);
+  (void)std::fprintf(stderr, "evade: plan %lld %s (%s) after %d transmission(s)%s%s\n",
+                     static_cast<long long>(r.plan_id), lcm_link::outcome_name(r.outcome),
+                     r.reason.c_str(), r.transmissions, r.note.empty() ? "" : ": ",
+                     r.note.c_str());
   return lcm_link::exit_code(r);
 }
 

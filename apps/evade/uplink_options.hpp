@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -13,12 +14,31 @@
 
 namespace evade::cli {
 
-/// --key, --key-id, --ack-timeout-s, --retransmit-s.
+/// --key, --key-id, --telemetry-key, --ack-timeout-s, --retransmit-s.
 struct SigningFlags {
   std::string key_file;
   int key_id = 0;
+  std::string telemetry_key_file;  ///< empty: the --key file
   double ack_timeout_s = 5.0;
   double retransmit_s = 0.25;
+};
+
+/// The ground's signing side of one command: its keys (command and telemetry, read from the
+/// key files) and its ARSN counter (auth::ArsnCounter beside the command key file, locked for
+/// the command's life).
+class GroundSigner {
+ public:
+  explicit GroundSigner(const SigningFlags& f);
+  ~GroundSigner();
+  GroundSigner(const GroundSigner&) = delete;
+  GroundSigner& operator=(const GroundSigner&) = delete;
+  const lcm_link::GroundKeys& keys() const noexcept { return keys_; }
+  lcm_link::ArsnSource* arsn() noexcept;
+
+ private:
+  lcm_link::GroundKeys keys_;
+  class Counter;
+  std::unique_ptr<Counter> counter_;
 };
 
 /// The signing flags and the uplink's own --lcm-url and --json (`evade arm`, `evade key`).

@@ -28,11 +28,13 @@ std::int64_t publish_burn_plan(lcm_t* lcm, const std::string& channel, const Bur
   const std::int64_t epoch = stamp.epoch_utime != 0 ? stamp.epoch_utime : utime;
   evade_burn_plan_t m{};
   guidance_lcm::to_lcm(plan, utime, seq, epoch, stamp.frame, &m);
+  if (stamp.key.id != 0 && stamp.arsn <= 0) {
+    throw std::invalid_argument("publish_burn_plan: a signed plan needs its ARSN (the ground's "
+                                "counter, docs/SECURITY.md ARSN-2)");
+  }
   std::vector<std::uint8_t> buf(static_cast<std::size_t>(m.getEncodedSize()));
-  guidance_lcm::ArsnClock clock;
   const int n = stamp.key.id != 0
-                    ? guidance_lcm::encode_signed(&m, channel.c_str(), stamp.key,
-                                                  stamp.arsn != 0 ? stamp.arsn : clock.next(),
+                    ? guidance_lcm::encode_signed(&m, channel.c_str(), stamp.key, stamp.arsn,
                                                   buf.data(), static_cast<int>(buf.size()))
                     : m.encode(buf.data(), 0, static_cast<int>(buf.size()));
   if (n < 0)

@@ -94,9 +94,10 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
       handle_ready();
       return latest_;
     }
-    // Lockstep: wait for the command of this tick. Until the node has answered once, the
-    // cycle is re-sent every 200 ms (the node may still be subscribing); re-sent messages
-    // carry the same seq, so the node counts any duplicate as stale.
+    // Lockstep: wait for the command of this tick. Without an answer the cycle is re-sent
+    // every 200 ms: the node may still be subscribing, or have dropped the tick (a burst that
+    // spent the clock's verification budget: docs/SECURITY.md AUTH-5); re-sent messages carry
+    // the same seq, so the node counts any duplicate as stale.
     const std::int64_t deadline = mono_us() + timeout_us_;
     std::int64_t resend_at = mono_us() + 200000;
     while (!(have_cmd_ && latest_.utime_us == utime_us)) {
@@ -108,14 +109,13 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
            << "' (is the node running with --lockstep on the same URL?)";
         throw std::runtime_error(os.str());
       }
-      if (!answered_once_ && now >= resend_at) {
+      if (now >= resend_at) {
         send_cycle();
         resend_at = now + 200000;
       }
-      const std::int64_t wait_us = std::min(deadline, answered_once_ ? deadline : resend_at) - now;
+      const std::int64_t wait_us = std::min(deadline, resend_at) - now;
       wait(static_cast<int>((wait_us + 999) / 1000));
     }
-    answered_once_ = true;
     // The node publishes its status right after the command; when it does so every cycle,
     // wait for it too so status() describes this cycle.
     if (status_every_cycle_) {
@@ -192,7 +192,6 @@ class LcmEndpoint final : public sim::GuidanceEndpoint {
   guidance::ThrustCommand latest_{};  // zero thrust until the node has spoken
   bool have_cmd_ = false;
   std::int64_t last_cmd_seq_ = 0;
-  bool answered_once_ = false;
   StatusWatch status_;  // the node's newest status
   bool status_every_cycle_ = true;
   long bad_cmds_ = 0;

@@ -167,13 +167,16 @@ def main(argv):
     problems = []
     runs = 0
     base = tempfile.mkdtemp(prefix="evade_no_key_bytes_")  # mode 0700
-    # Control: a valid key file is accepted by the ground (no acknowledgement: exit 4).
+    # Control: a valid key file (the command key, and the telemetry key the ground verifies the
+    # node's answers with) is accepted by the ground (no acknowledgement: exit 4).
     d = tempfile.mkdtemp(dir=base)
-    valid = make_file(d, "valid.key", "text", "key 1 command " + hex_key + "\n")
+    hex_tm = random_key().hex()
+    valid = make_file(d, "valid.key", "text",
+                      "key 1 command " + hex_key + "\nkey 3 telemetry " + hex_tm + "\n")
     for what, cmd in commands(evade, node, valid, d):
         rc, out, err = run(cmd)
         runs += 1
-        check_outputs("control, " + what, out, err, windows(hex_key), problems)
+        check_outputs("control, " + what, out, err, windows(hex_key) | windows(hex_tm), problems)
         if what != "node" and rc != 4:
             problems.append("control, %s: a valid key file gave exit %s, not 4 (no acknowledgement): %s"
                             % (what, rc, redact(err, windows(hex_key))))

@@ -8,9 +8,20 @@
 //       EVADE_ARM sent on EVADE_BURN_PLAN; a plan signed with a retired key; a forged plan with
 //       ARSN = INT64_MAX; an unsigned arm and an unsigned disarm; a spoofed nav (seq + 1, the
 //       orbit rotated); a single unsigned angles message. Prints what it sent as JSON.
-//   bus_attacker flood URL RATE_HZ SECONDS
-//       forged plans (the ground's key id, a random MAC, ARSN = INT64_MAX) at RATE_HZ for
-//       SECONDS, paced by CLOCK_MONOTONIC; prints {"sent": N, "achieved_hz": R}.
+//   bus_attacker flood URL RATE_HZ SECONDS [CHANNEL]
+//       forged messages (the ground's key id, or the sensor's, a wrong MAC, ARSN = INT64_MAX)
+//       at RATE_HZ for SECONDS, paced by CLOCK_MONOTONIC, on CHANNEL: plan (default), arm,
+//       key_cmd, nav, angles, clock, or all (the six in turn); prints {"sent": N,
+//       "achieved_hz": R}.
+//   bus_attacker burst URL COUNT CHANNEL
+//       COUNT forged messages on CHANNEL at once (no pacing); prints {"sent": N}.
+//   bus_attacker forge-telemetry URL SECONDS
+//       for SECONDS: answers every command it sees on the bus with forged acknowledgements
+//       naming that very command (its key id, ARSN and MAC copied), one unsigned and one
+//       signed with a key of its own, claiming it accepted and claiming it refused
+//       (PLAN_REJECT_OVER_BUDGET); and publishes a forged status every 10 ms claiming the plan
+//       accepted, armed, and every key's ARSN at INT64_MAX. Prints {"forged_acks": N,
+//       "forged_status": M}.
 // Exit 1 on an LCM failure, 2 on bad arguments.
 #include <time.h>
 
@@ -25,6 +36,11 @@
 #include <lcm/lcm.h>
 
 #include "evade/auth/key_file.hpp"
+#include "evade/auth/trailer.hpp"
+#include "evade/evade_cmd_ack_t.hpp"
+#include "evade/evade_guidance_status_t.hpp"
+#include "evade/evade_key_cmd_t.hpp"
+#include "evade/evade_sim_clock_t.hpp"
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_arm_t.hpp"
 #include "evade/evade_burn_plan_t.hpp"
@@ -142,20 +158,55 @@ int attacks(lcm_t* lcm, const std::string& key_file, const std::string& retired_
   return ok ? 0 : 1;
 }
 
-int flood(lcm_t* lcm, double rate_hz, double seconds) {
+// A forger's key: the given key id (the ground's 1, or a sensor's), not its key.
+SigningKey forger_key(std::int32_t id) {
   SigningKey forged;
-  forged.id = 1;  // the ground's key id, not its key
+  forged.id = id;
   for (std::size_t i = 0; i < forged.key.size(); ++i) forged.key[i] = static_cast<std::uint8_t>(i * 7 + 3);
-  evade_burn_plan_t m = plan(std::numeric_limits<std::int64_t>::max());
-  std::vector<std::uint8_t> b = bytes_of(m, kChanPlan, &forged, std::numeric_limits<std::int64_t>::max());
+  return forged;
+}
+
+struct Forgery {
+  const char* channel;
+  std::vector<std::uint8_t> bytes;
+};
+
+// One forged message per channel: commands under the ground's key id, sensors under key id 2.
+std::vector<Forgery> forgeries(const std::string& which) {
+  const std::int64_t max = std::numeric_limits<std::int64_t>::max();
+  const SigningKey cmd = forger_key(1);
+  const SigningKey sensor = forger_key(2);
+  std::vector<Forgery> all;
+  evade_arm_t arm{};
+  arm.utime = realtime_us();
+  arm.armed = 0;
+  evade_key_cmd_t kc{};
+  kc.op = 2;
+  kc.key_id = 1;
+  evade_nav_state_t nav{};
+  evade_angles_t ang{};
+  evade_sim_clock_t tick{};
+  if (which == "plan" || which == "all") all.push_back({kChanPlan, bytes_of(plan(max), kChanPlan, &cmd, max)});
+  if (which == "arm" || which == "all") all.push_back({kChanArm, bytes_of(arm, kChanArm, &cmd, max)});
+  if (which == "key_cmd" || which == "all") all.push_back({kChanKeyCmd, bytes_of(kc, kChanKeyCmd, &cmd, max)});
+  if (which == "nav" || which == "all") all.push_back({kChanNav, bytes_of(nav, kChanNav, &sensor, max)});
+  if (which == "angles" || which == "all") all.push_back({kChanAngles, bytes_of(ang, kChanAngles, &sensor, max)});
+  if (which == "clock" || which == "all") all.push_back({kChanClock, bytes_of(tick, kChanClock, &sensor, max)});
+  return all;
+}
+
+int flood(lcm_t* lcm, double rate_hz, double seconds, const std::string& which) {
+  std::vector<Forgery> f = forgeries(which);
+  if (f.empty() || !(rate_hz > 0.0)) return 2;
   const double t0 = mono_s();
   long n = 0;
   while (mono_s() - t0 < seconds) {
     const double due = t0 + static_cast<double>(n) / rate_hz;
     const double now = mono_s();
     if (due > now) sleep_s(due - now);
-    b[b.size() - 1] = static_cast<std::uint8_t>(n);  // a different MAC each time
-    if (lcm_publish(lcm, kChanPlan, b.data(), static_cast<unsigned>(b.size())) != 0) return 1;
+    Forgery& g = f[static_cast<std::size_t>(n) % f.size()];
+    g.bytes[g.bytes.size() - 1] = static_cast<std::uint8_t>(n);  // a different MAC each time
+    if (lcm_publish(lcm, g.channel, g.bytes.data(), static_cast<unsigned>(g.bytes.size())) != 0) return 1;
     ++n;
   }
   (void)std::printf("{\"sent\": %ld, \"achieved_hz\": %.1f}\n", n,
@@ -163,11 +214,96 @@ int flood(lcm_t* lcm, double rate_hz, double seconds) {
   return 0;
 }
 
+int burst(lcm_t* lcm, long count, const std::string& which) {
+  std::vector<Forgery> f = forgeries(which);
+  if (f.empty() || count < 0) return 2;
+  for (long n = 0; n < count; ++n) {
+    Forgery& g = f[static_cast<std::size_t>(n) % f.size()];
+    g.bytes[g.bytes.size() - 1] = static_cast<std::uint8_t>(n);
+    if (lcm_publish(lcm, g.channel, g.bytes.data(), static_cast<unsigned>(g.bytes.size())) != 0) return 1;
+  }
+  (void)std::printf("{\"sent\": %ld}\n", count);
+  return 0;
+}
+
+// The forger of telemetry: it sees every command on the bus (no confidentiality) and answers it.
+struct TelemetryForger {
+  lcm_t* lcm;
+  SigningKey own = forger_key(3);  // the node's telemetry key id, not its key
+  long acks = 0;
+
+  void answer(const lcm_recv_buf_t* rbuf, std::int8_t command) {
+    auth::TrailerView t;
+    const auto* d = static_cast<const std::uint8_t*>(rbuf->data);
+    if (!auth::read_trailer(d, rbuf->data_size, &t)) return;
+    for (int v = 0; v < 4; ++v) {
+      evade_cmd_ack_t a{};
+      a.utime = realtime_us();
+      a.command = command;
+      a.cmd_key_id = t.key_id;
+      a.cmd_arsn = t.arsn;
+      for (std::size_t i = 0; i < auth::kMacBytes; ++i) a.cmd_mac[i] = static_cast<std::int8_t>(t.mac[i]);
+      const bool refuse = v % 2 == 1;
+      a.outcome = refuse ? evade_cmd_ack_t::OUTCOME_REFUSED : evade_cmd_ack_t::OUTCOME_ACCEPTED;
+      a.reason = refuse ? evade_cmd_ack_t::REASON_OUT_OF_RANGE : evade_cmd_ack_t::REASON_OK;
+      a.detail = refuse ? evade_guidance_status_t::PLAN_REJECT_OVER_BUDGET : 0;
+      a.node_arsn = std::numeric_limits<std::int64_t>::max();
+      const std::vector<std::uint8_t> b = bytes_of(a, kChanCmdAck, v < 2 ? nullptr : &own, t.arsn);
+      if (lcm_publish(lcm, kChanCmdAck, b.data(), static_cast<unsigned>(b.size())) == 0) ++acks;
+    }
+  }
+  static void on_plan(const lcm_recv_buf_t* r, const char*, void* u) {
+    static_cast<TelemetryForger*>(u)->answer(r, evade_cmd_ack_t::COMMAND_PLAN);
+  }
+  static void on_arm(const lcm_recv_buf_t* r, const char*, void* u) {
+    static_cast<TelemetryForger*>(u)->answer(r, evade_cmd_ack_t::COMMAND_ARM);
+  }
+  static void on_key(const lcm_recv_buf_t* r, const char*, void* u) {
+    static_cast<TelemetryForger*>(u)->answer(r, evade_cmd_ack_t::COMMAND_KEY_CMD);
+  }
+};
+
+// A status claiming every plan accepted (any id the ground may choose) and armed.
+std::vector<std::uint8_t> forged_status(long n) {
+  evade_guidance_status_t s{};
+  s.utime = realtime_us();
+  s.seq = n;
+  s.armed = 1;
+  s.plan_ack_id = n;
+  s.plan_ack_result = 0;
+  s.auth_n_keys = 8;
+  for (int i = 0; i < 8; ++i) {
+    s.auth_key_id[i] = i + 1;
+    s.auth_key_arsn[i] = std::numeric_limits<std::int64_t>::max();
+  }
+  return bytes_of(s, kChanStatus, nullptr, 0);
+}
+
+int forge_telemetry(lcm_t* lcm, double seconds) {
+  TelemetryForger f{lcm};
+  lcm_subscription_t* subs[3] = {lcm_subscribe(lcm, kChanPlan, &TelemetryForger::on_plan, &f),
+                                 lcm_subscribe(lcm, kChanArm, &TelemetryForger::on_arm, &f),
+                                 lcm_subscribe(lcm, kChanKeyCmd, &TelemetryForger::on_key, &f)};
+  long status = 0;
+  const double t0 = mono_s();
+  while (mono_s() - t0 < seconds) {
+    const std::vector<std::uint8_t> b = forged_status(status);
+    if (lcm_publish(lcm, kChanStatus, b.data(), static_cast<unsigned>(b.size())) == 0) ++status;
+    if (lcm_handle_timeout(lcm, 10) < 0) return 1;
+  }
+  for (lcm_subscription_t* s : subs) {
+    if (s != nullptr) (void)lcm_unsubscribe(lcm, s);
+  }
+  (void)std::printf("{\"forged_acks\": %ld, \"forged_status\": %ld}\n", f.acks, status);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    (void)std::fprintf(stderr, "usage: bus_attacker attacks URL KEY RETIRED_KEY | flood URL RATE_HZ SECONDS\n");
+    (void)std::fprintf(stderr, "usage: bus_attacker attacks URL KEY RETIRED_KEY | flood URL RATE_HZ "
+                       "SECONDS [CHANNEL] | burst URL COUNT CHANNEL | forge-telemetry URL SECONDS\n");
     return 2;
   }
   const std::string mode = argv[1];
@@ -176,7 +312,11 @@ int main(int argc, char** argv) {
   int rc = 2;
   try {
     if (mode == "attacks" && argc == 5) rc = attacks(lcm, argv[3], argv[4]);
-    if (mode == "flood" && argc == 5) rc = flood(lcm, std::atof(argv[3]), std::atof(argv[4]));
+    if (mode == "flood" && (argc == 5 || argc == 6)) {
+      rc = flood(lcm, std::atof(argv[3]), std::atof(argv[4]), argc == 6 ? argv[5] : "plan");
+    }
+    if (mode == "burst" && argc == 5) rc = burst(lcm, std::atol(argv[3]), argv[4]);
+    if (mode == "forge-telemetry" && argc == 4) rc = forge_telemetry(lcm, std::atof(argv[3]));
   } catch (const std::exception& e) {
     (void)std::fprintf(stderr, "bus_attacker: %s\n", e.what());
     rc = 1;

@@ -21,7 +21,7 @@ struct PlanStamp {
   std::int64_t epoch_utime = 0;  ///< utime of the plan's t = 0 [us]; 0: the message utime
   guidance::PlanFrame frame = guidance::PlanFrame::kRsw;  ///< frame the node flies
   guidance_lcm::SigningKey key{};  ///< id != 0: sign with this command key (docs/SECURITY.md)
-  std::int64_t arsn = 0;           ///< with key: the ARSN; 0: the sender's clock (ArsnClock)
+  std::int64_t arsn = 0;           ///< with key: the ARSN (> 0: the ground's counter, ARSN-2)
 };
 
 /// Publishes plan on channel through lcm (an open LCM instance; memq:// delivers only within
