@@ -21,7 +21,7 @@ namespace {
 
 constexpr int kLockTries = 501;               // the first try and 500 retries 20 ms apart: 10 s
 constexpr long kLockRetryNs = 20L * 1000 * 1000;
-constexpr std::size_t kMaxCounterBytes = 64 * 1024;
+constexpr std::size_t kMaxCounterBytes = std::size_t{64} * 1024;
 constexpr std::int64_t kMaxArsn = 9223372036854775807;  // INT64_MAX
 constexpr const char* kCounterHeader = "evade-arsn 1";
 
@@ -119,13 +119,19 @@ void ArsnCounter::read_existing() {
     std::int32_t id = 0;
     std::int64_t last = 0;
     if (line_no == 1 && !line.equals(kCounterHeader)) {
-      throw std::runtime_error(where + "expected '" + kCounterHeader + "'" + fix);
+      std::string e = where;
+      e.append("expected '").append(kCounterHeader).append("'").append(fix);
+      throw std::runtime_error(e);
     }
     if (line_no > 1 && !counter_line(line, &id, &last)) {
-      throw std::runtime_error(where + "expected 'key <id> <last ARSN>'" + fix);
+      std::string e = where;
+      e.append("expected 'key <id> <last ARSN>'").append(fix);
+      throw std::runtime_error(e);
     }
     if (line_no > 1 && !last_.emplace(id, last).second) {
-      throw std::runtime_error(where + "key id " + std::to_string(id) + " appears twice" + fix);
+      std::string e = where;
+      e.append("key id ").append(std::to_string(id)).append(" appears twice").append(fix);
+      throw std::runtime_error(e);
     }
     pos = end + 1;
   }

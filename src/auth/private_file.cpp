@@ -22,7 +22,7 @@ constexpr int kMaxIoAttempts = 1000;  // write/read calls per file: each moves >
 std::string mode_octal(mode_t mode) {
   char text[8];
   // Four octal digits and a NUL always fit in 8 bytes: snprintf cannot truncate or fail here.
-  (void)std::snprintf(text, sizeof(text), "%04o", static_cast<unsigned>(mode & 07777U));
+  (void)std::snprintf(text, sizeof(text), "%04o", mode & 07777U);
   return text;
 }
 

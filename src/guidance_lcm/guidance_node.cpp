@@ -2,14 +2,14 @@
 // internal NodeCore (internal/node_core.hpp); every call forwards.
 #include "evade/guidance_lcm/guidance_node.hpp"
 
-#include <utility>
 
 #include "evade/guidance_lcm/internal/node_core.hpp"
 
 namespace evade::guidance_lcm {
 
-GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, NodeSecurity sec)
-    : core_(std::make_unique<internal::NodeCore>(lcm, cfg, out_lcm, std::move(sec))) {}
+GuidanceNode::GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm,
+                           const NodeSecurity& sec)
+    : core_(std::make_unique<internal::NodeCore>(lcm, cfg, out_lcm, sec)) {}
 GuidanceNode::~GuidanceNode() = default;
 
 int GuidanceNode::drain() noexcept { return core_->drain(); }

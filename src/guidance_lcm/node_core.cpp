@@ -33,7 +33,7 @@ SeqTracker tracker(const NodeConfig& cfg) { return SeqTracker(cfg.max_seq_jump);
 
 }  // namespace
 
-NodeCore::NodeCore(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, NodeSecurity sec)
+NodeCore::NodeCore(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, const NodeSecurity& sec)
     : lcm_(lcm),
       cfg_(checked(cfg)),
       law_(cfg.guidance),

@@ -33,7 +33,7 @@ struct KeyRecord {
 };
 
 /// The largest key file read_key_file reads.
-inline constexpr std::size_t kMaxKeyFileBytes = 64 * 1024;
+inline constexpr std::size_t kMaxKeyFileBytes = std::size_t{64} * 1024;
 
 /// Every key of the file at path. Throws std::runtime_error naming the file (and the line and
 /// field) when it is a symbolic link, not a regular file, not owned by this user, accessible

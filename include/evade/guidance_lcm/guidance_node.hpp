@@ -38,7 +38,7 @@ class GuidanceNode {
   /// std::invalid_argument on a bad config or a null lcm, std::runtime_error naming the channel
   /// if LCM refuses a subscription, or naming the state file and the problem.
   GuidanceNode(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm = nullptr,
-               NodeSecurity sec = NodeSecurity{});
+               const NodeSecurity& sec = NodeSecurity{});
   ~GuidanceNode();
   GuidanceNode(const GuidanceNode&) = delete;
   GuidanceNode& operator=(const GuidanceNode&) = delete;

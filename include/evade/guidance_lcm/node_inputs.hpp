@@ -70,13 +70,13 @@ inline constexpr std::array<InputRow, kInputCount> kInputRows = {{
      kMaxCommandBytes, evade_cmd_ack_t::COMMAND_KEY_CMD},
 }};
 
-inline constexpr const InputRow& input_row(Input in) noexcept {
+constexpr const InputRow& input_row(Input in) noexcept {
   return kInputRows[static_cast<std::size_t>(in)];
 }
 
 /// True when the policy requires the input to be signed.
 inline bool input_required(const InputRow& row, const AuthPolicy& p) noexcept {
-  return row.required == nullptr || p.*(row.required);
+  return row.required == nullptr || p.*row.required;
 }
 
 /// The status's auth_required mask of a policy: the bits of every required input.

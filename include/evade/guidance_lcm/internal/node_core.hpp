@@ -57,7 +57,7 @@ namespace evade::guidance_lcm::internal {
 
 class NodeCore {
  public:
-  NodeCore(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, NodeSecurity sec);
+  NodeCore(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, const NodeSecurity& sec);
   ~NodeCore();
   NodeCore(const NodeCore&) = delete;
   NodeCore& operator=(const NodeCore&) = delete;

@@ -19,7 +19,7 @@ namespace evade::guidance_lcm {
 class VerifyBudget {
  public:
   explicit VerifyBudget(const AuthPolicy& p) noexcept {
-    for (const InputRow& row : kInputRows) full_[index(row.input)] = p.*(row.verify_budget);
+    for (const InputRow& row : kInputRows) full_[index(row.input)] = p.*row.verify_budget;
     refill();
   }
   /// Spends one verification on in's channel; false (nothing spent) when its budget is gone.
