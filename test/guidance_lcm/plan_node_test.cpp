@@ -89,7 +89,8 @@ struct RejectCase {
 // PLAN-IN-1: bytes on EVADE_BURN_PLAN that are too large, not a plan, or a plan with
 // trailing bytes are rejected with their reason, counted, and never start a burn. The
 // decoder's own checks, with the plan channel's authentication off (node.auth.plan_required =
-// false); with it on the same bytes never reach the decoder (auth_node_test.cpp).
+// false); with it on the same bytes never reach the decoder
+// (node_refuses_forged_commands_test.cpp).
 TEST(NodePlan, OversizedAndUndecodablePlanBytesAreRejectedAndAccounted) {
   NodeConfig cfg;
   cfg.auth.plan_required = false;
