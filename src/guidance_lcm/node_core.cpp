@@ -40,6 +40,7 @@ NodeCore::NodeCore(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, const Node
       stale_us_(static_cast<std::int64_t>(std::llround(cfg.guidance.stale_limit_s * 1e6))),
       future_us_(static_cast<std::int64_t>(std::llround(cfg.future_tolerance_s * 1e6))),
       refill_window_us_(static_cast<std::int64_t>(std::llround(1e6 / cfg.guidance.rate_hz))),
+      drain_us_(static_cast<std::int64_t>(std::llround(cfg.max_drain_s * 1e6))),
       queue_(static_cast<std::size_t>(cfg.queue_capacity)),
       seq_{tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg)},
       armed_(cfg.guidance.armed),
@@ -100,9 +101,13 @@ void NodeCore::unsubscribe_all() noexcept {
   }
 }
 
+// Bounded in count and in time (node.max_drain_per_cycle, node.max_drain_s): under a flood the
+// cycle's input work stops there and the rest waits in LCM's queues for the next cycle.
 int NodeCore::drain() noexcept {
   int n = 0;
+  const std::int64_t deadline = monotonic_us() + drain_us_;
   while (n < cfg_.max_drain_per_cycle) {
+    if (n % 16 == 15 && monotonic_us() >= deadline) break;  // the clock read every 16 messages
     const int rc = lcm_handle_timeout(lcm_, 0);
     if (rc < 0) return -1;
     if (rc == 0) break;

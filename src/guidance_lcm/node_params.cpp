@@ -13,6 +13,9 @@ const Param<C> kRows[] = {
                     "bounded input queue: the oldest message is dropped (and counted) beyond it"),
     EVADE_PARAM_INT(C, max_drain_per_cycle, "-", 1, 1000000,
                     "LCM messages handled per drain (bounds one cycle's input work)"),
+    EVADE_PARAM_REAL(C, max_drain_s, "s", 0.0, 1.0, true,
+                     "wall time one drain may take; what is left waits in LCM's queue for the "
+                     "next cycle (bounds the cycle's input work in time under a flood)"),
     EVADE_PARAM_INT(C, status_divider, "-", 1, 10000, "publish the status every N cycles"),
     EVADE_PARAM_INT(C, recv_buf_bytes, "B", 65536, 1073741824,
                     "kernel UDP receive buffer requested for a udpm:// input (NODE-IN-6)"),

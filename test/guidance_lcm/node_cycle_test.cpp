@@ -20,6 +20,24 @@ void send_nav(Rig& rig, std::int64_t t_us, std::int64_t seq) {
   rig.pub.send(kChanNav, n);
 }
 
+// A drain bounded in time as well: with node.max_drain_s far below what 4,000 messages take to
+// dispatch, one drain stops early (the clock is read every 16 messages: after 15, 31, ...) and
+// the rest waits for the next.
+TEST(NodeCycle, DrainStopsAtItsWallTimeBoundAndLeavesTheRestForTheNext) {
+  NodeConfig cfg;
+  cfg.max_drain_s = 1e-6;
+  cfg.queue_capacity = 4096;
+  Rig rig(cfg);
+  for (std::int64_t s = 1; s <= 4000; ++s) send_nav(rig, 1000000, s);
+  const int first = rig.node.drain();
+  EXPECT_GE(first, 15);
+  EXPECT_LT(first, 4000);
+  int total = first;
+  for (int i = 0; i < 4000 && total < 4000; ++i) total += rig.node.drain();
+  EXPECT_EQ(total, 4000);
+  EXPECT_EQ(rig.node.counts().received, 4000);
+}
+
 TEST(NodeCycle, DrainHandlesAtMostMaxDrainPerCycleAndLeavesTheRestForTheNext) {
   NodeConfig cfg;
   cfg.max_drain_per_cycle = 2;

@@ -43,7 +43,8 @@ class GuidanceNode {
   GuidanceNode(const GuidanceNode&) = delete;
   GuidanceNode& operator=(const GuidanceNode&) = delete;
 
-  /// Handles every message LCM has ready now (non-blocking), up to node.max_drain_per_cycle.
+  /// Handles every message LCM has ready now (non-blocking), up to node.max_drain_per_cycle
+  /// messages and node.max_drain_s of wall time.
   /// Returns the number handled, or -1 if LCM reported an error (e.g. end of a log file).
   int drain() noexcept;
   /// Lockstep: blocks up to timeout_ms for a sim-clock tick (inputs that arrive first are

@@ -31,6 +31,7 @@ struct NodeConfig {
   double future_tolerance_s = 0.05;
   int queue_capacity = 16;
   int max_drain_per_cycle = 4096;
+  double max_drain_s = 0.010;  ///< wall time one drain may take (bounds the cycle under a flood)
   int status_divider = 1;
   int max_seq_jump = 1000;
   int recv_buf_bytes = 8 * 1024 * 1024;  ///< udpm kernel receive buffer requested (NODE-IN-6)

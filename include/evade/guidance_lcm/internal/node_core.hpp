@@ -150,6 +150,7 @@ class NodeCore {
   std::int64_t stale_us_;
   std::int64_t future_us_;
   std::int64_t refill_window_us_;
+  std::int64_t drain_us_;
   InputQueue queue_;
   std::array<SubContext, kInputCount> ctx_{};
   std::array<lcm_subscription_t*, kInputCount> subs_{};
