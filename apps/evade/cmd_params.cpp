@@ -13,7 +13,7 @@
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/screen_scenario.hpp"
 #include "evade/core/earth_params.hpp"
-#include "evade/dynamics/propagate_command.hpp"
+#include "evade/commands/propagate_command.hpp"
 #include "evade/formation/decision.hpp"
 #include "evade/formation/formation_scenario.hpp"
 #include "evade/guidance/guidance_params.hpp"
@@ -91,7 +91,7 @@ std::string parameters_markdown() {
       "and the allowed range, with the same text in every command and in the guidance node.\n";
   md += section("Earth model", "every command that reads `earth.*`", "earth.", earth_params());
   md += section("Propagation demo", "`evade propagate`", "propagation.",
-                dynamics::propagate_params());
+                commands::propagate_params());
   return md + guidance_sections() + threat_and_screening_sections() + formation_to_cam_sections();
 }
 

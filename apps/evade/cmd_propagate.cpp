@@ -1,5 +1,5 @@
 // `evade propagate`: the foundation demo, one orbit with the chosen gravity model
-// (evade/dynamics/propagate_command.hpp). With --tle or --omm it propagates every object of a
+// (evade/commands/propagate_command.hpp). With --tle or --omm it propagates every object of a
 // catalog with SGP4 instead, written as it goes (evade/sgp4/propagate_catalog_stream.hpp):
 // --json one streamed JSON document, --csv one row per state. Parse, call, print.
 #include <cstdio>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli.hpp"
-#include "evade/dynamics/propagate_command.hpp"
+#include "evade/commands/propagate_command.hpp"
 #include "evade/sgp4/propagate_catalog_stream.hpp"
 
 namespace evade::cli {
@@ -63,9 +63,9 @@ int run_catalog(const PropagateOptions& o) {
 int run_propagate(const PropagateOptions& o) {
   if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) return run_catalog(o);
   const config::Scenario sc = load_scenario(o.common);
-  const dynamics::PropagateResult r = dynamics::run_propagate(dynamics::read_propagate_request(sc));
-  if (o.common.json) print_json(dynamics::to_json(r));
-  else print(dynamics::to_text(r));
+  const commands::PropagateResult r = commands::run_propagate(commands::read_propagate_request(sc));
+  if (o.common.json) print_json(commands::to_json(r));
+  else print(commands::to_text(r));
   return 0;
 }
 

@@ -22,7 +22,7 @@
 #include "evade/dynamics/dop853.hpp"
 #include "evade/dynamics/gravity.hpp"
 
-namespace evade::dynamics {
+namespace evade::commands {
 
 /// The run's numbers (scenario keys propagation.<key>). duration_s has no default.
 struct PropagateParams {
@@ -72,4 +72,4 @@ nlohmann::json to_json(const PropagateResult& r);
 /// The text `evade propagate` prints.
 std::string to_text(const PropagateResult& r);
 
-}  // namespace evade::dynamics
+}  // namespace evade::commands

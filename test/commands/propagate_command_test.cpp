@@ -8,9 +8,9 @@
 #include <string>
 
 #include "evade/config/scenario.hpp"
-#include "evade/dynamics/propagate_command.hpp"
+#include "evade/commands/propagate_command.hpp"
 
-namespace evade::dynamics {
+namespace evade::commands {
 namespace {
 
 TEST(PropagateCommand, DemoLeoNodeRegressionMatchesTheSecularRate) {
@@ -79,4 +79,4 @@ TEST(PropagateCommand, BadInputNamesTheKey) {
 }
 
 }  // namespace
-}  // namespace evade::dynamics
+}  // namespace evade::commands

@@ -1,7 +1,7 @@
 // `evade propagate` as a library call (see propagate_command.hpp): one orbit with the chosen
 // gravity model, and for J2 the secular RAAN rate of Vallado, "Fundamentals of Astrodynamics
 // and Applications", 4th ed., 2013, eq. 9-41, beside the observed osculating change.
-#include "evade/dynamics/propagate_command.hpp"
+#include "evade/commands/propagate_command.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include "evade/config/read_params.hpp"
 #include "evade/dynamics/orbit_propagator.hpp"
 
-namespace evade::dynamics {
+namespace evade::commands {
 namespace {
 
 const Param<PropagateParams> kPropagateRows[] = {
@@ -125,4 +125,4 @@ std::string to_text(const PropagateResult& r) {
   return t;
 }
 
-}  // namespace evade::dynamics
+}  // namespace evade::commands
