@@ -7,6 +7,7 @@
 #include <string>
 
 #include "evade/sgp4/propagate_catalog_stream.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -18,7 +19,7 @@ const char* kTle =
 
 PropagateCatalogRequest request(double span_s, double step_s, const std::string& frame) {
   PropagateCatalogRequest req;
-  req.catalog = read_catalog(kTle, "test.tle");
+  req.catalog = read_tle(kTle, "test.tle");
   req.span_s = span_s;
   req.step_s = step_s;
   req.frame = frame;
@@ -86,7 +87,7 @@ TEST(PropagateCatalogCommand, BadFlagsAndEmptyCatalogsAreRefused) {
     EXPECT_EQ(std::string(e.what()), "--frame = 'gcrs' is invalid: expected teme or eci");
   }
   PropagateCatalogRequest empty = request(60.0, 60.0, "teme");
-  empty.catalog = read_catalog("1 00005U garbage\n2 00005 garbage\n", "bad.tle");
+  empty.catalog = read_tle("1 00005U garbage\n2 00005 garbage\n", "bad.tle");
   try {
     run_propagate_catalog(empty);
     ADD_FAILURE() << "accepted an empty catalog";

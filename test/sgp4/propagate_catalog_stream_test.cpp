@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/sgp4/propagate_catalog_stream.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -25,7 +26,7 @@ PropagateCatalogRequest verification_request(double span_s, double step_s, const
   while (std::getline(in, line))
     if (line.size() >= 69 && (line[0] == '1' || line[0] == '2')) text += line.substr(0, 69) + "\n";
   PropagateCatalogRequest req;
-  req.catalog = read_catalog(text, "SGP4-VER.TLE");
+  req.catalog = read_tle(text, "SGP4-VER.TLE");
   req.span_s = span_s;
   req.step_s = step_s;
   req.frame = frame;

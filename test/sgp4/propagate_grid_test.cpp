@@ -14,6 +14,7 @@
 
 #include "evade/sgp4/propagate_catalog_command.hpp"
 #include "evade/sgp4/propagate_grid.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -25,7 +26,7 @@ Catalog sgp4_ver() {
   std::string line, text;
   while (std::getline(in, line))
     if (line.size() >= 69 && (line[0] == '1' || line[0] == '2')) text += line.substr(0, 69) + "\n";
-  Catalog c = read_catalog(text, "SGP4-VER.TLE");
+  Catalog c = read_tle(text, "SGP4-VER.TLE");
   if (c.objects.size() < 30) throw std::runtime_error("SGP4-VER.TLE: too few element sets read");
   return c;
 }
@@ -156,7 +157,7 @@ TEST(PropagateGrid, BadInputsNamed) {
   req.start_j2000_s = INFINITY;
   EXPECT_THROW(check_state_grid_request(c, req), std::invalid_argument);
   EXPECT_THROW((void)frame_is_j2000("gcrf"), std::invalid_argument);
-  const Catalog none = read_catalog("1 00005U garbage\n", "bad.tle");
+  const Catalog none = read_tle("1 00005U garbage\n", "bad.tle");
   try {
     check_state_grid_request(none, req);
     FAIL() << "empty catalog accepted";

@@ -6,10 +6,10 @@
 
 #include "evade/sgp4/catalog.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
 
 /// Reads every OMM of a KVN text. A bad line or value rejects its message (recorded with
 /// line and column) and reading goes on at the next CCSDS_OMM_VERS.
-Catalog read_omm_kvn(const std::string& text, const std::string& source);
+sgp4::Catalog read_omm_kvn(const std::string& text, const std::string& source);
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

@@ -1,14 +1,17 @@
 // CSV "GP" element sets: a header of OMM keywords (CCSDS 502.0-B-2) and one row per element
 // set, split by the RFC 4180 rules (comma separator, double quotes, "" inside quotes).
-#include "evade/sgp4/gp_csv.hpp"
+#include "evade/ccsds/gp_csv.hpp"
 
 #include <sstream>
 #include <vector>
 
-#include "evade/sgp4/internal/text_fields.hpp"
-#include "evade/sgp4/omm_record.hpp"
+#include "evade/sgp4/text_fields.hpp"
+#include "evade/ccsds/omm_record.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
+
+using sgp4::Catalog;
+using sgp4::trim;
 namespace {
 
 struct Cell {
@@ -75,4 +78,4 @@ Catalog read_gp_csv(const std::string& text, const std::string& source) {
   return cat;
 }
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

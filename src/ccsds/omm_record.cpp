@@ -1,13 +1,22 @@
 // OMM keyword set -> SGP4 mean elements, CCSDS 502.0-B-2 "Orbit Data Messages", section 4
 // (OMM: metadata, mean Keplerian elements, TLE-related parameters, units of each keyword).
-#include "evade/sgp4/omm_record.hpp"
+#include "evade/ccsds/omm_record.hpp"
 
 #include <set>
 
 #include "evade/sgp4/catalog.hpp"
-#include "evade/sgp4/internal/text_fields.hpp"
+#include "evade/sgp4/text_fields.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
+
+using sgp4::Catalog;
+using sgp4::MeanElements;
+using sgp4::ReadError;
+using sgp4::ReadIssue;
+using sgp4::trim;
+using sgp4::parse_plain_decimal;
+using sgp4::parse_plain_integer;
+using sgp4::parse_iso_epoch;
 namespace {
 
 [[noreturn]] void fail(const std::string& source, const OmmValue& v, const std::string& expected) {
@@ -118,4 +127,4 @@ bool is_omm_keyword(const std::string& key) {
   return kKeys.count(key) > 0 || key.rfind("USER_DEFINED_", 0) == 0;
 }
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

@@ -6,10 +6,10 @@
 
 #include "evade/sgp4/catalog.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
 
 /// Reads every row; a bad row is rejected with its line and the column of the bad field.
 /// Header names that are not OMM keywords are ignored, like the JSON form's extra keys.
-Catalog read_gp_csv(const std::string& text, const std::string& source);
+sgp4::Catalog read_gp_csv(const std::string& text, const std::string& source);
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

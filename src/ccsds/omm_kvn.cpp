@@ -1,13 +1,18 @@
 // CCSDS OMM, KVN form: CCSDS 502.0-B-2 "Orbit Data Messages", sections 4 (OMM content) and
 // 7 (KVN syntax: one keyword per line, '=' separator, optional [unit], COMMENT lines).
-#include "evade/sgp4/omm_kvn.hpp"
+#include "evade/ccsds/omm_kvn.hpp"
 
 #include <sstream>
 
-#include "evade/sgp4/internal/text_fields.hpp"
-#include "evade/sgp4/omm_record.hpp"
+#include "evade/sgp4/text_fields.hpp"
+#include "evade/ccsds/omm_record.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
+
+using sgp4::Catalog;
+using sgp4::ReadError;
+using sgp4::ReadIssue;
+using sgp4::trim;
 namespace {
 
 struct KvnState {
@@ -82,4 +87,4 @@ Catalog read_omm_kvn(const std::string& text, const std::string& source) {
   return cat;
 }
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

@@ -6,11 +6,11 @@
 
 #include "evade/sgp4/catalog.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
 
 /// Reads every object; a bad value rejects its object (the issue gives the line and column
 /// of the object's '{' and names the key). Values may be JSON numbers or strings. Keys that
 /// are not OMM keywords (providers add their own, e.g. DECAY_DATE) are ignored.
-Catalog read_gp_json(const std::string& text, const std::string& source);
+sgp4::Catalog read_gp_json(const std::string& text, const std::string& source);
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

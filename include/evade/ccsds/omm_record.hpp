@@ -15,7 +15,7 @@
 
 #include "evade/sgp4/mean_elements.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
 
 struct OmmValue {
   std::string text;
@@ -28,17 +28,17 @@ struct OmmRecord {
   int line = 0;  ///< where the entry begins
 };
 
-/// Converts one record; throws ReadError (catalog.hpp) naming the keyword, its line and
+/// Converts one record; throws sgp4::ReadError (sgp4/catalog.hpp) naming the keyword, its line and
 /// column, and what was expected, for a missing or bad value.
-MeanElements mean_elements_from_omm(const OmmRecord& rec, const std::string& source);
+sgp4::MeanElements mean_elements_from_omm(const OmmRecord& rec, const std::string& source);
 
 /// Converts rec into cat: its mean elements appended to cat->objects, or the ReadError the
 /// conversion throws as one issue (one bad entry).
-void add_omm_record(const OmmRecord& rec, const std::string& source, Catalog* cat);
+void add_omm_record(const OmmRecord& rec, const std::string& source, sgp4::Catalog* cat);
 
 /// True for keywords of the OMM standard (header, metadata, mean elements, TLE parameters,
 /// spacecraft parameters, covariance, user-defined USER_DEFINED_*); the strict forms (KVN,
 /// XML) reject any other keyword.
 bool is_omm_keyword(const std::string& key);
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

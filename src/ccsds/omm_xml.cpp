@@ -3,16 +3,22 @@
 // small strict recursive-descent XML reader (W3C XML 1.0 subset: elements, attributes,
 // character data, comments, processing instructions, the five predefined entities and
 // numeric character references below 128).
-#include "evade/sgp4/omm_xml.hpp"
+#include "evade/ccsds/omm_xml.hpp"
 
 #include <cctype>
 #include <memory>
 #include <vector>
 
-#include "evade/sgp4/internal/text_fields.hpp"
-#include "evade/sgp4/omm_record.hpp"
+#include "evade/sgp4/text_fields.hpp"
+#include "evade/ccsds/omm_record.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
+
+using sgp4::Catalog;
+using sgp4::ReadError;
+using sgp4::ReadIssue;
+using sgp4::trim;
+using sgp4::parse_plain_integer;
 namespace {
 
 struct XmlNode {
@@ -219,4 +225,4 @@ Catalog read_omm_xml(const std::string& text, const std::string& source) {
   return cat;
 }
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

@@ -1,14 +1,17 @@
 // JSON "GP" element sets: the OMM keywords of CCSDS 502.0-B-2 as the keys of JSON objects
 // (RFC 8259), one object per element set, as catalogue providers publish them.
-#include "evade/sgp4/gp_json.hpp"
+#include "evade/ccsds/gp_json.hpp"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "evade/sgp4/omm_record.hpp"
+#include "evade/ccsds/omm_record.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
+
+using sgp4::Catalog;
+using sgp4::ReadIssue;
 namespace {
 
 struct Pos {
@@ -112,4 +115,4 @@ Catalog read_gp_json(const std::string& text, const std::string& source) {
   return cat;
 }
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds

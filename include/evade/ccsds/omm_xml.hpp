@@ -7,13 +7,13 @@
 
 #include "evade/sgp4/catalog.hpp"
 
-namespace evade::sgp4 {
+namespace evade::ccsds {
 
 /// Reads every OMM segment of an XML text with a small strict reader of the OMM subset:
 /// elements, attributes, text, comments, the XML declaration and the five predefined
 /// entities; no DTD, CDATA or other entities. A document that is not well formed gives
 /// one issue at the first fault (line, column) and no entries from the rest of the file
 /// (there is nothing to resynchronise on); a bad value rejects only its segment.
-Catalog read_omm_xml(const std::string& text, const std::string& source);
+sgp4::Catalog read_omm_xml(const std::string& text, const std::string& source);
 
-}  // namespace evade::sgp4
+}  // namespace evade::ccsds
