@@ -1,6 +1,6 @@
-// `evade propagate --tle/--omm` written as it goes (include/evade/sgp4/propagate_catalog_stream.hpp
+// `evade propagate --tle/--omm` written as it goes (include/evade/commands/propagate_catalog_stream.hpp
 // gives the method and the formats).
-#include "evade/sgp4/propagate_catalog_stream.hpp"
+#include "evade/commands/propagate_catalog_stream.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -9,7 +9,13 @@
 
 #include "catalog_instants.hpp"
 
-namespace evade::sgp4 {
+namespace evade::commands {
+
+using sgp4::MeanElements;
+using sgp4::Sgp4Propagator;
+using sgp4::Sgp4Error;
+using sgp4::OperationMode;
+using sgp4::epoch_seconds_since_j2000;
 namespace {
 
 struct Task {
@@ -257,4 +263,4 @@ std::string to_text(const StreamedCatalog& r) {
   return text;
 }
 
-}  // namespace evade::sgp4
+}  // namespace evade::commands

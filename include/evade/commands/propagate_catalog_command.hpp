@@ -14,10 +14,10 @@
 #include "evade/sgp4/catalog.hpp"
 #include "evade/sgp4/sgp4.hpp"
 
-namespace evade::sgp4 {
+namespace evade::commands {
 
 struct PropagateCatalogRequest {
-  Catalog catalog;             ///< read by the caller (read_catalog), bad entries included
+  sgp4::Catalog catalog;       ///< read by the caller (ccsds::read_catalog), bad entries included
   double span_s = 86400.0;     ///< time span from the latest element epoch [s]
   double step_s = 60.0;        ///< output step [s]
   std::string frame = "teme";  ///< teme | eci (J2000)
@@ -39,7 +39,7 @@ struct CatalogTrack {
   std::string name;
   double epoch_j2000_s = 0.0;    ///< element epoch, UTC seconds since J2000
   std::vector<CatalogState> states;
-  Sgp4Error error = Sgp4Error::kNone;  ///< why SGP4 stopped (kNone: every instant computed)
+  sgp4::Sgp4Error error = sgp4::Sgp4Error::kNone;  ///< why SGP4 stopped (kNone: every instant computed)
   double error_t_s = 0.0;              ///< the instant SGP4 stopped at [s]
 };
 
@@ -60,4 +60,4 @@ PropagateCatalogResult run_propagate_catalog(const PropagateCatalogRequest& req)
 /// (propagate_catalog_stream.hpp, which also gives the text form).
 nlohmann::json to_json(const PropagateCatalogResult& r);
 
-}  // namespace evade::sgp4
+}  // namespace evade::commands

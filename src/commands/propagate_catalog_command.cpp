@@ -1,7 +1,7 @@
 // `evade propagate --tle/--omm` as a library call (see propagate_catalog_command.hpp): SGP4
 // (Vallado, Crawford, Hujsak and Kelso, "Revisiting Spacetrack Report #3", 2006) for every
 // object over the same instants, TEME or J2000.
-#include "evade/sgp4/propagate_catalog_command.hpp"
+#include "evade/commands/propagate_catalog_command.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -15,7 +15,18 @@
 
 #include "catalog_instants.hpp"
 
-namespace evade::sgp4 {
+namespace evade::commands {
+
+using sgp4::Catalog;
+using sgp4::MeanElements;
+using sgp4::Sgp4Propagator;
+using sgp4::Sgp4Error;
+using sgp4::Sgp4State;
+using sgp4::OperationMode;
+using sgp4::epoch_seconds_since_j2000;
+using sgp4::latest_epoch_seconds_since_j2000;
+using sgp4::frame_is_j2000;
+using sgp4::teme_to_j2000;
 namespace {
 
 constexpr double kMaxSpanS = 366.0 * 86400.0;  // one year of SGP4 is already far past its use
@@ -133,4 +144,4 @@ nlohmann::json to_json(const PropagateCatalogResult& r) {
   return j;
 }
 
-}  // namespace evade::sgp4
+}  // namespace evade::commands

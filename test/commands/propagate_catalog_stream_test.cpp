@@ -1,4 +1,4 @@
-// `evade propagate --tle/--omm` written as it goes (sgp4/propagate_catalog_stream.hpp): the
+// `evade propagate --tle/--omm` written as it goes (commands/propagate_catalog_stream.hpp): the
 // streamed JSON document is the in-memory result's JSON (to_json(run_propagate_catalog)),
 // number for number, on the Vallado et al. 2006 verification set (SGP4-VER.TLE, which has
 // objects that stop at an SGP4 error inside the span) with tasks cut inside objects; the CSV
@@ -12,10 +12,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evade/sgp4/propagate_catalog_stream.hpp"
+#include "evade/commands/propagate_catalog_stream.hpp"
 #include "evade/sgp4/tle_reader.hpp"
 
-namespace evade::sgp4 {
+namespace evade::commands {
+
+using sgp4::Sgp4Error;
+using sgp4::read_tle;
 namespace {
 
 PropagateCatalogRequest verification_request(double span_s, double step_s, const char* frame) {
@@ -132,4 +135,4 @@ TEST(PropagateCatalogStream, PiecesDoNotGrowWithTheSpan) {
 }
 
 }  // namespace
-}  // namespace evade::sgp4
+}  // namespace evade::commands

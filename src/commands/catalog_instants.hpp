@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "evade/sgp4/propagate_catalog_command.hpp"
+#include "evade/commands/propagate_catalog_command.hpp"
 
-namespace evade::sgp4::detail {
+namespace evade::commands::detail {
 
 /// The result without its objects: the request checked (check_propagate_catalog_request, and
 /// std::invalid_argument "no valid element set in the file (N bad entries)" for an empty
@@ -20,10 +20,10 @@ double instant_s(const PropagateCatalogRequest& req, long k);
 
 /// The state at t_s from the start (start_j2000_s) of an object whose element epoch is
 /// offset_s before the start, in TEME or J2000; the SGP4 error (kNone: *out written).
-Sgp4Error catalog_state(const Sgp4Propagator& p, double offset_s, double start_j2000_s,
+sgp4::Sgp4Error catalog_state(const sgp4::Sgp4Propagator& p, double offset_s, double start_j2000_s,
                         double t_s, bool j2000, CatalogState* out);
 
 /// "YYYY-MM-DD hh:mm:ss.fffffffff" of UTC seconds since J2000.
 std::string utc_text(double j2000_s);
 
-}  // namespace evade::sgp4::detail
+}  // namespace evade::commands::detail

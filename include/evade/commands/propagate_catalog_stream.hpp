@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "evade/sgp4/propagate_catalog_command.hpp"
+#include "evade/commands/propagate_catalog_command.hpp"
 
-namespace evade::sgp4 {
+namespace evade::commands {
 
 enum class StateFormat { kNone, kJson, kCsv };
 
@@ -37,7 +37,7 @@ struct StreamedTrack {
   double epoch_j2000_s = 0.0;
   long states = 0;             ///< instants written
   CatalogState last;           ///< the last written (when states > 0)
-  Sgp4Error error = Sgp4Error::kNone;
+  sgp4::Sgp4Error error = sgp4::Sgp4Error::kNone;
   double error_t_s = 0.0;
 };
 
@@ -61,4 +61,4 @@ StreamedCatalog stream_propagate_catalog(const PropagateCatalogRequest& req, Sta
 /// The text `evade propagate --tle/--omm` prints: one line per object with its last state.
 std::string to_text(const StreamedCatalog& r);
 
-}  // namespace evade::sgp4
+}  // namespace evade::commands
