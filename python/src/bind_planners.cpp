@@ -24,7 +24,7 @@
 #include "evade/observability/observability_command.hpp"
 #include "evade/sim/plan_file.hpp"
 #include "evade/threat/burn_plan.hpp"
-#include "evade/threat/threat_area_command.hpp"
+#include "evade/commands/threat_area_command.hpp"
 
 namespace evade::python {
 namespace {
@@ -73,7 +73,7 @@ nb::tuple result_pair(const nlohmann::json& j, const std::optional<BurnPlan>& pl
 nb::tuple threat_area(const std::string& scenario, const std::vector<std::string>& sets, long seed,
                       bool eliminate, const std::vector<double>& sweep_dv_mps,
                       const std::vector<double>& sweep_transfer_s, std::int64_t plan_id) {
-  threat::ThreatAreaRequest req = threat::read_threat_area_request(load_scenario(scenario, sets));
+  commands::ThreatAreaRequest req = commands::read_threat_area_request(load_scenario(scenario, sets));
   if (seed >= 0) req.scenario.evasion.seed = static_cast<std::uint64_t>(seed);
   req.study.eliminate = eliminate;
   req.study.sweep_dv_mps = sweep_dv_mps;
@@ -82,8 +82,8 @@ nb::tuple threat_area(const std::string& scenario, const std::vector<std::string
   std::optional<BurnPlan> plan;
   {
     nb::gil_scoped_release unlocked;
-    const threat::ThreatAreaResult r = threat::run_threat_area(req);
-    j = threat::to_json(r);
+    const commands::ThreatAreaResult r = commands::run_threat_area(req);
+    j = commands::to_json(r);
     // V_E = 0 (evasion.dv_mps = 0): no burn to fly.
     if (r.study.evasion.dv_mps > 0.0) plan = threat::make_burn_plan(r.study.evasion, plan_id);
   }

@@ -7,11 +7,21 @@
 #include <cstdio>
 #include <string>
 
-#include "evade/threat/threat_area_command.hpp"
+#include "evade/commands/threat_area_command.hpp"
 
 #include "evade/core/text_format.hpp"
 
-namespace evade::threat {
+namespace evade::commands {
+
+using threat::BurnSweepRow;
+using threat::EliminationResult;
+using threat::EvasionResult;
+using threat::SearchCertificate;
+using threat::ThreatArea;
+using threat::ThreatInterval;
+using threat::ThreatScenario;
+using threat::ThreatStudy;
+using threat::TransferStudyRow;
 namespace {
 
 std::string vec_text(const Vec3& v) {
@@ -99,4 +109,4 @@ std::string to_text(const ThreatAreaResult& r) {
   return t;
 }
 
-}  // namespace evade::threat
+}  // namespace evade::commands

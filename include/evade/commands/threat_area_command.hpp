@@ -14,17 +14,17 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/config/scenario.hpp"
-#include "evade/threat/threat_scenario.hpp"
+#include "evade/commands/threat_scenario.hpp"
 #include "evade/threat/threat_study.hpp"
 
-namespace evade::threat {
+namespace evade::commands {
 
 struct ThreatAreaRequest {
   std::string scenario_source;  ///< the scenario's name or path (echoed as "scenario")
   nlohmann::json scenario_used = nlohmann::json::object();  ///< every scenario value read
-  ThreatScenario scenario;      ///< the solvers' inputs (flags may override them)
-  ThreatStudyRequest study;     ///< elimination, V_E sweep, transfer-time sweep
-  ThreatStudyProgress progress; ///< optional hooks called as each step starts or ends
+  threat::ThreatScenario scenario;      ///< the solvers' inputs (flags may override them)
+  threat::ThreatStudyRequest study;     ///< elimination, V_E sweep, transfer-time sweep
+  threat::ThreatStudyProgress progress; ///< optional hooks called as each step starts or ends
 };
 
 /// Reads every key of the command (read_threat_scenario: parameter tables, Earth table,
@@ -34,8 +34,8 @@ ThreatAreaRequest read_threat_area_request(const config::Scenario& sc);
 struct ThreatAreaResult {
   std::string scenario_source;
   nlohmann::json scenario_used = nlohmann::json::object();
-  ThreatScenario scenario;  ///< the inputs the study ran with
-  ThreatStudy study;        ///< every figure (costs, burn, arcs, sweeps, wall times)
+  threat::ThreatScenario scenario;  ///< the inputs the study ran with
+  threat::ThreatStudy study;        ///< every figure (costs, burn, arcs, sweeps, wall times)
 };
 
 /// Runs the study (run_threat_study). Throws std::invalid_argument for bad inputs (naming the
@@ -50,4 +50,4 @@ nlohmann::json to_json(const ThreatAreaResult& r);
 /// the eliminating burn and the sweep rows when asked for.
 std::string to_text(const ThreatAreaResult& r);
 
-}  // namespace evade::threat
+}  // namespace evade::commands

@@ -1,8 +1,8 @@
-// Scenario → threat-area solver inputs (include/evade/threat/threat_scenario.hpp). Paper 001
+// Scenario → threat-area solver inputs (include/evade/commands/threat_scenario.hpp). Paper 001
 // (Yu, Wang, Sun 2017) sec. 4.1: the target on a circular orbit (mean motion n of the HCW
 // model, sec. 2.1 eq. 1), the chaser's relative state at t0, ΔV_max and ΔT; sec. 3.2 and
 // 4.2: the evasion search and the eliminating burn. Keys and ranges: threat_params.cpp.
-#include "evade/threat/threat_scenario.hpp"
+#include "evade/commands/threat_scenario.hpp"
 
 #include <string>
 
@@ -10,7 +10,12 @@
 #include "evade/core/param.hpp"
 #include "evade/threat/threat_params.hpp"
 
-namespace evade::threat {
+namespace evade::commands {
+
+using threat::ThreatScenario;
+using threat::evasion_params;
+using threat::threat_geometry_params;
+using threat::threat_option_params;
 namespace {
 
 // Keys without a usable default: the problem is not defined without them.
@@ -62,4 +67,4 @@ ThreatScenario read_threat_scenario(const config::Scenario& sc) {
   return out;
 }
 
-}  // namespace evade::threat
+}  // namespace evade::commands

@@ -1,14 +1,25 @@
 // `evade plan threat-area` as a library call: the request read from the scenario, the study
 // run, its JSON (the keys, order and numbers the command has always printed) and its text.
 // Paper 001 (Yu Dateng, Wang Hua, Sun Fuyu, "Optimal evasive maneuver strategy with potential
-// threatening area being considered", 2017); see evade/threat/threat_area_command.hpp.
-#include "evade/threat/threat_area_command.hpp"
+// threatening area being considered", 2017); see evade/commands/threat_area_command.hpp.
+#include "evade/commands/threat_area_command.hpp"
 
 #include <string>
 
 #include "evade/config/json_values.hpp"
 
-namespace evade::threat {
+namespace evade::commands {
+
+using threat::BurnSweepRow;
+using threat::DecisionCounts;
+using threat::EliminationResult;
+using threat::EvasionResult;
+using threat::SearchCertificate;
+using threat::ThreatArea;
+using threat::ThreatScenario;
+using threat::ThreatStudy;
+using threat::TransferStudyRow;
+using threat::run_threat_study;
 namespace {
 
 using config::vec_json;
@@ -165,4 +176,4 @@ nlohmann::json to_json(const ThreatAreaResult& r) {
   return j;
 }
 
-}  // namespace evade::threat
+}  // namespace evade::commands

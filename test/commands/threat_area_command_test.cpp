@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "evade/config/scenario.hpp"
-#include "evade/threat/threat_area_command.hpp"
+#include "evade/commands/threat_area_command.hpp"
 
 namespace evade::threat {
 namespace {
+
+using namespace evade::commands;
 
 const ThreatAreaResult& seed1_result() {
   static const ThreatAreaResult r =

@@ -8,7 +8,7 @@
 #include "evade/config/scenario.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/threat/threat_params.hpp"
-#include "evade/threat/threat_scenario.hpp"
+#include "evade/commands/threat_scenario.hpp"
 #include "seed1_geometry.hpp"
 
 namespace evade::threat {
@@ -31,7 +31,7 @@ std::string read_error(const std::string& doc, const std::string& assignment) {
   config::Scenario sc = config::Scenario::from_yaml_string(doc, "doc");
   if (!assignment.empty()) sc.apply_override(assignment);
   try {
-    read_threat_scenario(sc);
+    commands::read_threat_scenario(sc);
   } catch (const config::ConfigError& e) {
     return e.what();
   }
@@ -39,7 +39,7 @@ std::string read_error(const std::string& doc, const std::string& assignment) {
 }
 
 TEST(ThreatScenario, Seed1GivesThePaperGeometryAndOptions) {
-  const ThreatScenario in = read_threat_scenario(config::Scenario::load("seed1"));
+  const ThreatScenario in = commands::read_threat_scenario(config::Scenario::load("seed1"));
   EXPECT_EQ(in.earth.mu_m3ps2, 3.986005e14);
   EXPECT_EQ(in.earth.re_m, 6371110.0);
   EXPECT_EQ(in.geometry.n_radps, seed1_geometry().n_radps);
@@ -64,7 +64,7 @@ TEST(ThreatScenario, Seed1GivesThePaperGeometryAndOptions) {
 
 TEST(ThreatScenario, OptionalKeysTakeTheLibraryDefaults) {
   const ThreatScenario in =
-      read_threat_scenario(config::Scenario::from_yaml_string(kMinimalDoc, "doc"));
+      commands::read_threat_scenario(config::Scenario::from_yaml_string(kMinimalDoc, "doc"));
   const ThreatOptions lib;
   EXPECT_EQ(in.threat.step_s, lib.step_s);
   EXPECT_EQ(in.threat.edge_tol_s, lib.edge_tol_s);
