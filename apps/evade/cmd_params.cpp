@@ -15,7 +15,7 @@
 #include "evade/core/earth_params.hpp"
 #include "evade/commands/propagate_command.hpp"
 #include "evade/formation/decision.hpp"
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/formation/plan_inputs.hpp"
 #include "evade/guidance/guidance_params.hpp"
 #include "evade/guidance_lcm/node_params.hpp"
 #include "evade/observability/observability_params.hpp"

@@ -19,7 +19,7 @@
 
 #include "bind_common.hpp"
 #include "evade/core/burn_plan.hpp"
-#include "evade/formation/formation_command.hpp"
+#include "evade/commands/formation_command.hpp"
 #include "evade/observability/burn_plan.hpp"
 #include "evade/observability/observability_command.hpp"
 #include "evade/sim/plan_file.hpp"
@@ -92,16 +92,16 @@ nb::tuple threat_area(const std::string& scenario, const std::vector<std::string
 
 nb::tuple formation_plan(const std::string& scenario, const std::vector<std::string>& sets,
                          bool numerical_limits, std::int64_t plan_id) {
-  formation::FormationRequest req = formation::read_formation_request(load_scenario(scenario, sets));
+  commands::FormationRequest req = commands::read_formation_request(load_scenario(scenario, sets));
   req.numerical_limits = numerical_limits;
   nlohmann::json j;
   std::optional<BurnPlan> plan;
   {
     nb::gil_scoped_release unlocked;
-    const formation::FormationResult r = formation::run_formation(req);
-    j = formation::to_json(r);
+    const commands::FormationResult r = commands::run_formation(req);
+    j = commands::to_json(r);
     // No maneuver needed, or an infeasible decision (its trade-off is never published).
-    if (r.decision.maneuver_needed && r.decision.feasible) plan = formation::make_burn_plan(r, plan_id);
+    if (r.decision.maneuver_needed && r.decision.feasible) plan = commands::make_burn_plan(r, plan_id);
   }
   return result_pair(j, plan);
 }

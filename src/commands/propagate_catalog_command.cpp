@@ -16,35 +16,24 @@
 #include "catalog_instants.hpp"
 
 namespace evade::commands {
-
-using sgp4::Catalog;
-using sgp4::MeanElements;
-using sgp4::Sgp4Propagator;
-using sgp4::Sgp4Error;
-using sgp4::Sgp4State;
-using sgp4::OperationMode;
-using sgp4::epoch_seconds_since_j2000;
-using sgp4::latest_epoch_seconds_since_j2000;
-using sgp4::frame_is_j2000;
-using sgp4::teme_to_j2000;
 namespace {
 
 constexpr double kMaxSpanS = 366.0 * 86400.0;  // one year of SGP4 is already far past its use
 constexpr double kMaxStepsPerObject = 100000.0;
 
-CatalogTrack propagate_object(const MeanElements& m, double start_j2000_s,
+CatalogTrack propagate_object(const sgp4::MeanElements& m, double start_j2000_s,
                               const PropagateCatalogRequest& req, bool j2000) {
   CatalogTrack track;
   track.id = m.norad_id;
   track.name = m.name;
-  track.epoch_j2000_s = epoch_seconds_since_j2000(m);
-  const Sgp4Propagator prop(m, OperationMode::kImproved);
+  track.epoch_j2000_s = sgp4::epoch_seconds_since_j2000(m);
+  const sgp4::Sgp4Propagator prop(m, sgp4::OperationMode::kImproved);
   const double offset_s = start_j2000_s - track.epoch_j2000_s;
   for (long k = 0; k <= detail::last_instant(req); ++k) {
     const double t_s = detail::instant_s(req, k);
     CatalogState out;
-    const Sgp4Error e = detail::catalog_state(prop, offset_s, start_j2000_s, t_s, j2000, &out);
-    if (e != Sgp4Error::kNone) {
+    const sgp4::Sgp4Error e = detail::catalog_state(prop, offset_s, start_j2000_s, t_s, j2000, &out);
+    if (e != sgp4::Sgp4Error::kNone) {
       track.error = e;
       track.error_t_s = t_s;
       break;
@@ -64,7 +53,7 @@ nlohmann::json track_json(const CatalogTrack& t) {
     states.push_back({{"t_s", s.t_s}, {"r_m", config::vec_json(s.r_m)},
                       {"v_mps", config::vec_json(s.v_mps)}});
   }
-  if (t.error != Sgp4Error::kNone) {
+  if (t.error != sgp4::Sgp4Error::kNone) {
     obj["sgp4_error"] = {{"t_s", t.error_t_s},
                          {"code", static_cast<int>(t.error)},
                          {"text", sgp4_error_text(t.error)}};
@@ -82,7 +71,7 @@ void check_propagate_catalog_request(const PropagateCatalogRequest& req) {
   if (!(req.step_s > 0.0) || req.span_s / req.step_s > kMaxStepsPerObject)
     throw std::invalid_argument("--step-s = " + std::to_string(req.step_s) +
                                 " is invalid: expected a number > 0 with span/step <= 100000");
-  (void)frame_is_j2000(req.frame);  // the frame names' one check
+  (void)sgp4::frame_is_j2000(req.frame);  // the frame names' one check
 }
 
 PropagateCatalogResult run_propagate_catalog(const PropagateCatalogRequest& req) {
@@ -97,12 +86,12 @@ namespace detail {
 
 PropagateCatalogResult catalog_result_header(const PropagateCatalogRequest& req) {
   check_propagate_catalog_request(req);
-  const Catalog& cat = req.catalog;
+  const sgp4::Catalog& cat = req.catalog;
   if (cat.objects.empty())
     throw std::invalid_argument("no valid element set in the file (" +
                                 std::to_string(cat.bad_entries) + " bad entries)");
   PropagateCatalogResult r;
-  r.start_j2000_s = latest_epoch_seconds_since_j2000(cat.objects);
+  r.start_j2000_s = sgp4::latest_epoch_seconds_since_j2000(cat.objects);
   r.j2000 = req.frame == "eci";
   r.bad_entries = cat.bad_entries;
   for (const auto& is : cat.issues) r.issues.push_back(is.message());
@@ -117,13 +106,13 @@ double instant_s(const PropagateCatalogRequest& req, long k) {
   return std::min(static_cast<double>(k) * req.step_s, req.span_s);
 }
 
-Sgp4Error catalog_state(const Sgp4Propagator& p, double offset_s, double start_j2000_s,
+sgp4::Sgp4Error catalog_state(const sgp4::Sgp4Propagator& p, double offset_s, double start_j2000_s,
                         double t_s, bool j2000, CatalogState* out) {
-  const Sgp4State s = p.propagate_s(offset_s + t_s);
-  if (s.error != Sgp4Error::kNone) return s.error;
+  const sgp4::Sgp4State s = p.propagate_s(offset_s + t_s);
+  if (s.error != sgp4::Sgp4Error::kNone) return s.error;
   *out = {t_s, s.r_teme_m, s.v_teme_mps};
-  if (j2000) teme_to_j2000(start_j2000_s + t_s, s.r_teme_m, s.v_teme_mps, out->r_m, out->v_mps);
-  return Sgp4Error::kNone;
+  if (j2000) sgp4::teme_to_j2000(start_j2000_s + t_s, s.r_teme_m, s.v_teme_mps, out->r_m, out->v_mps);
+  return sgp4::Sgp4Error::kNone;
 }
 
 std::string utc_text(double j2000_s) {

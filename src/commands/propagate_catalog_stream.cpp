@@ -10,12 +10,6 @@
 #include "catalog_instants.hpp"
 
 namespace evade::commands {
-
-using sgp4::MeanElements;
-using sgp4::Sgp4Propagator;
-using sgp4::Sgp4Error;
-using sgp4::OperationMode;
-using sgp4::epoch_seconds_since_j2000;
 namespace {
 
 struct Task {
@@ -27,7 +21,7 @@ struct TaskOut {
   std::string bytes;  ///< reused from wave to wave
   long states = 0;
   CatalogState last;
-  Sgp4Error error = Sgp4Error::kNone;
+  sgp4::Sgp4Error error = sgp4::Sgp4Error::kNone;
   double error_t_s = 0.0;
 };
 
@@ -71,17 +65,17 @@ void append_state(std::string& s, long id, long k, const CatalogState& st, State
 }
 
 void run_task(const Plan& p, const Task& t, TaskOut* out) {
-  const MeanElements& m = p.req->catalog.objects[t.object];
+  const sgp4::MeanElements& m = p.req->catalog.objects[t.object];
   out->bytes.clear();
   out->states = 0;
-  out->error = Sgp4Error::kNone;
-  const Sgp4Propagator prop(m, OperationMode::kImproved);
-  const double offset_s = p.start_j2000_s - epoch_seconds_since_j2000(m);
+  out->error = sgp4::Sgp4Error::kNone;
+  const sgp4::Sgp4Propagator prop(m, sgp4::OperationMode::kImproved);
+  const double offset_s = p.start_j2000_s - sgp4::epoch_seconds_since_j2000(m);
   for (long k = t.k0; k < t.k1; ++k) {
     const double t_s = detail::instant_s(*p.req, k);
     CatalogState st;
-    const Sgp4Error e = detail::catalog_state(prop, offset_s, p.start_j2000_s, t_s, p.j2000, &st);
-    if (e != Sgp4Error::kNone) {
+    const sgp4::Sgp4Error e = detail::catalog_state(prop, offset_s, p.start_j2000_s, t_s, p.j2000, &st);
+    if (e != sgp4::Sgp4Error::kNone) {
       out->error = e;
       out->error_t_s = t_s;
       return;
@@ -123,7 +117,7 @@ std::string json_object_head(const StreamedTrack& t, bool first) {
 
 std::string json_object_tail(const StreamedTrack& t) {
   std::string s = "\n]";
-  if (t.error != Sgp4Error::kNone) {
+  if (t.error != sgp4::Sgp4Error::kNone) {
     s += ",\"sgp4_error\":{\"code\":" + std::to_string(static_cast<int>(t.error)) + ",\"t_s\":";
     append(s, t.error_t_s);
     s += ",\"text\":" + json_string(sgp4_error_text(t.error)) + "}";
@@ -185,8 +179,8 @@ void write_task(const Plan& p, const Task& t, const TaskOut& o, StreamedCatalog*
   tr.states += o.states;
   r->states += o.states;
   if (o.states > 0) tr.last = o.last;
-  if (o.error != Sgp4Error::kNone) tr.error = o.error, tr.error_t_s = o.error_t_s;
-  if (o.error == Sgp4Error::kNone && t.k1 <= p.last_k) return;
+  if (o.error != sgp4::Sgp4Error::kNone) tr.error = o.error, tr.error_t_s = o.error_t_s;
+  if (o.error == sgp4::Sgp4Error::kNone && t.k1 <= p.last_k) return;
   (*done)[t.object] = 1;
   if (!json) return;
   const std::string tail = json_object_tail(tr);
@@ -202,10 +196,10 @@ StreamedCatalog summary_of(const PropagateCatalogRequest& req) {
   r.issues = h.issues;
   r.objects.resize(req.catalog.objects.size());
   for (std::size_t i = 0; i < r.objects.size(); ++i) {
-    const MeanElements& m = req.catalog.objects[i];
+    const sgp4::MeanElements& m = req.catalog.objects[i];
     r.objects[i].id = m.norad_id;
     r.objects[i].name = m.name;
-    r.objects[i].epoch_j2000_s = epoch_seconds_since_j2000(m);
+    r.objects[i].epoch_j2000_s = sgp4::epoch_seconds_since_j2000(m);
   }
   return r;
 }
@@ -257,7 +251,7 @@ std::string to_text(const StreamedCatalog& r) {
                           t.last.r_m.x(), t.last.r_m.y(), t.last.r_m.z());
       text += buf;
     }
-    if (t.error != Sgp4Error::kNone) text += std::string(" (stopped: ") + sgp4_error_text(t.error) + ")";
+    if (t.error != sgp4::Sgp4Error::kNone) text += std::string(" (stopped: ") + sgp4_error_text(t.error) + ")";
     text += '\n';
   }
   return text;

@@ -9,22 +9,11 @@
 #include "evade/config/json_values.hpp"
 
 namespace evade::commands {
-
-using threat::BurnSweepRow;
-using threat::DecisionCounts;
-using threat::EliminationResult;
-using threat::EvasionResult;
-using threat::SearchCertificate;
-using threat::ThreatArea;
-using threat::ThreatScenario;
-using threat::ThreatStudy;
-using threat::TransferStudyRow;
-using threat::run_threat_study;
 namespace {
 
 using config::vec_json;
 
-nlohmann::json counts_json(const DecisionCounts& c) {
+nlohmann::json counts_json(const threat::DecisionCounts& c) {
   return {{"two_impulse_accept", c.two_impulse_accept},
           {"bound_reject", c.bound_reject},
           {"sqp_threat", c.sqp_threat},
@@ -33,7 +22,7 @@ nlohmann::json counts_json(const DecisionCounts& c) {
           {"total", c.total()}};
 }
 
-nlohmann::json intervals_json(const ThreatArea& a) {
+nlohmann::json intervals_json(const threat::ThreatArea& a) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& iv : a.intervals) j.push_back({iv.start_s, iv.end_s});
   return j;
@@ -41,8 +30,8 @@ nlohmann::json intervals_json(const ThreatArea& a) {
 
 // The inputs and the chaser's cost at t0 without evasion.
 nlohmann::json summary_json(const ThreatAreaResult& r) {
-  const ThreatScenario& in = r.scenario;
-  const ThreatStudy& s = r.study;
+  const threat::ThreatScenario& in = r.scenario;
+  const threat::ThreatStudy& s = r.study;
   nlohmann::json j;
   j["scenario"] = r.scenario_source;
   j["n_radps"] = in.geometry.n_radps;
@@ -62,8 +51,8 @@ nlohmann::json summary_json(const ThreatAreaResult& r) {
 }
 
 // How the direction search's result was certified.
-nlohmann::json search_json(const EvasionResult& r, bool use_isres) {
-  const SearchCertificate& c = r.certificate;
+nlohmann::json search_json(const threat::EvasionResult& r, bool use_isres) {
+  const threat::SearchCertificate& c = r.certificate;
   const char* method = r.dv_mps == 0.0 ? "none (V_E = 0)" : use_isres ? "isres" : "sweep+bobyqa";
   return {{"method", method},
           {"grid_evaluations", c.grid_evaluations},
@@ -80,8 +69,8 @@ nlohmann::json search_json(const EvasionResult& r, bool use_isres) {
 }
 
 // The optimal direction at V_E.
-void add_evasion_json(const ThreatStudy& s, bool use_isres, nlohmann::json& j) {
-  const EvasionResult& r = s.evasion;
+void add_evasion_json(const threat::ThreatStudy& s, bool use_isres, nlohmann::json& j) {
+  const threat::EvasionResult& r = s.evasion;
   j["runtime_s"] = s.runtime_s;
   j["dv_mps"] = r.dv_mps;
   j["threat_arc_s"] = r.area.arc_s;
@@ -97,7 +86,7 @@ void add_evasion_json(const ThreatStudy& s, bool use_isres, nlohmann::json& j) {
   j["search"] = search_json(r, use_isres);
 }
 
-void add_elimination_json(const ThreatStudy& s, const EliminationResult& e, nlohmann::json& j) {
+void add_elimination_json(const threat::ThreatStudy& s, const threat::EliminationResult& e, nlohmann::json& j) {
   j["eliminating_dv_mps"] = e.eliminating_dv_mps;
   j["eliminating_lower_bracket_mps"] = e.threatened_dv_mps;
   j["eliminating_alpha_rad"] = e.best.alpha_rad;
@@ -110,8 +99,8 @@ void add_elimination_json(const ThreatStudy& s, const EliminationResult& e, nloh
   j["elimination_runtime_s"] = s.elimination_runtime_s;
 }
 
-nlohmann::json burn_row_json(const BurnSweepRow& row) {
-  const EvasionResult& q = row.evasion;
+nlohmann::json burn_row_json(const threat::BurnSweepRow& row) {
+  const threat::EvasionResult& q = row.evasion;
   return {{"dv_mps", q.dv_mps},
           {"threat_arc_s", q.area.arc_s},
           {"threat_arc_deg", q.area.arc_deg},
@@ -122,7 +111,7 @@ nlohmann::json burn_row_json(const BurnSweepRow& row) {
           {"runtime_s", row.runtime_s}};
 }
 
-nlohmann::json transfer_row_json(const TransferStudyRow& r) {
+nlohmann::json transfer_row_json(const threat::TransferStudyRow& r) {
   nlohmann::json row = {{"dt_transfer_s", r.dt_transfer_s}};
   for (int n = 2; n <= 4; ++n) {
     row["cost_t0_mps_" + std::to_string(n) + "_impulses"] = r.cost_t0_mps[n - 2];
@@ -154,12 +143,12 @@ ThreatAreaResult run_threat_area(const ThreatAreaRequest& req) {
   r.scenario_source = req.scenario_source;
   r.scenario_used = req.scenario_used;
   r.scenario = req.scenario;
-  r.study = run_threat_study(req.scenario, req.study, req.progress);
+  r.study = threat::run_threat_study(req.scenario, req.study, req.progress);
   return r;
 }
 
 nlohmann::json to_json(const ThreatAreaResult& r) {
-  const ThreatStudy& s = r.study;
+  const threat::ThreatStudy& s = r.study;
   nlohmann::json j = summary_json(r);
   add_evasion_json(s, r.scenario.evasion.use_isres, j);
   if (s.elimination) add_elimination_json(s, *s.elimination, j);

@@ -11,11 +11,6 @@
 #include "evade/threat/threat_params.hpp"
 
 namespace evade::commands {
-
-using threat::ThreatScenario;
-using threat::evasion_params;
-using threat::threat_geometry_params;
-using threat::threat_option_params;
 namespace {
 
 // Keys without a usable default: the problem is not defined without them.
@@ -46,15 +41,15 @@ Cfg read_table(const config::Scenario& sc, const ParamTable<Cfg>& table) {
 
 }  // namespace
 
-ThreatScenario read_threat_scenario(const config::Scenario& sc) {
-  ThreatScenario out;
+threat::ThreatScenario read_threat_scenario(const config::Scenario& sc) {
+  threat::ThreatScenario out;
   out.earth = config::read_earth(sc);
-  const auto geometry = read_table(sc, threat_geometry_params());
+  const auto geometry = read_table(sc, threat::threat_geometry_params());
   Vec6 chaser0_rsw;
   chaser0_rsw << sc.get_vec3("chaser.relative_rsw_m", -1e8, 1e8),
       sc.get_vec3("chaser.relative_rsw_mps", -1e4, 1e4);
-  const auto options = read_table(sc, threat_option_params());
-  const auto evasion = read_table(sc, evasion_params());
+  const auto options = read_table(sc, threat::threat_option_params());
+  const auto evasion = read_table(sc, threat::evasion_params());
   sc.mark_used("description");
   sc.check_all_used();
 

@@ -1,5 +1,5 @@
 // Scenario reader for paper 003's planner (see formation_scenario.hpp).
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/commands/formation_scenario.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -8,30 +8,8 @@
 #include "evade/config/read_elements.hpp"
 #include "evade/config/read_params.hpp"
 
-namespace evade::formation {
+namespace evade::commands {
 namespace {
-
-const Param<FormationParams> kFormationRows[] = {
-    EVADE_PARAM_REAL(FormationParams, side_length_m, "m", 1.0, 1e7, false,
-                     "L: side of the nominal equilateral triangle"),
-    EVADE_PARAM_REAL(FormationParams, box_delta_m, "m", 1e-3, 1e7 / 8.0, false,
-                     "control-box unit (at most side_length_m / 8)"),
-    EVADE_PARAM_REAL(FormationParams, raan_tolerance_deg, "deg", 1e-9, 90.0, false,
-                     "inter-group RAAN tolerance"),
-    EVADE_PARAM_REAL(FormationParams, phase_tolerance_deg, "deg", 1e-9, 90.0, false,
-                     "inter-group phase tolerance"),
-    EVADE_PARAM_REAL(FormationParams, horizon_days, "day", 1e-3, 60.0, false,
-                     "T: time until the next formation-keeping burn"),
-};
-
-const Param<PropagationParams> kPropagationRows[] = {
-    EVADE_PARAM_REAL(PropagationParams, rel_tol, "-", 1e-14, 1e-6, false,
-                     "DOP853 relative tolerance"),
-    EVADE_PARAM_REAL(PropagationParams, abs_tol_m, "m", 1e-12, 10.0, false,
-                     "DOP853 absolute tolerance (m and m/s)"),
-    EVADE_PARAM_INT(PropagationParams, samples_per_rev, "-", 8, 512,
-                    "samples per nodal period for the element averaging"),
-};
 
 // Required rows first (a missing key is named), then every row, checked.
 template <class Cfg>
@@ -41,9 +19,9 @@ void read_table(const config::Scenario& sc, const std::string& prefix,
   config::read_params(sc, prefix, table, cfg);
 }
 
-void read_formation_scalars(const config::Scenario& sc, FormationSpec& f) {
-  FormationParams p;
-  read_table(sc, "formation.", formation_params(), &p);
+void read_formation_scalars(const config::Scenario& sc, formation::FormationSpec& f) {
+  formation::FormationParams p;
+  read_table(sc, "formation.", formation::formation_params(), &p);
   if (p.box_delta_m > p.side_length_m / 8.0) {
     throw config::ConfigError(
         sc.source() + ": key 'formation.box_delta_m' = '" + param_value_text(p.box_delta_m) +
@@ -58,7 +36,7 @@ void read_formation_scalars(const config::Scenario& sc, FormationSpec& f) {
 }
 
 // formation.groups.N: unique names, nominal offsets and the three satellites' elements.
-std::vector<std::string> read_groups(const config::Scenario& sc, FormationSpec& f) {
+std::vector<std::string> read_groups(const config::Scenario& sc, formation::FormationSpec& f) {
   const std::size_t ng = sc.list_size("formation.groups");
   if (ng < 2) {
     throw config::ConfigError(sc.source() + ": key 'formation.groups' has " + std::to_string(ng) +
@@ -68,7 +46,7 @@ std::vector<std::string> read_groups(const config::Scenario& sc, FormationSpec& 
   std::vector<std::string> names;
   for (std::size_t g = 0; g < ng; ++g) {
     const std::string p = "formation.groups." + std::to_string(g) + ".";
-    Group gr;
+    formation::Group gr;
     gr.name = sc.get_string(p + "name");
     for (const std::string& n : names) {
       if (n == gr.name) {
@@ -88,7 +66,7 @@ std::vector<std::string> read_groups(const config::Scenario& sc, FormationSpec& 
       // FormationSpec::validate()'s, reported with their reason by read_plan_inputs.
       const OrbitalElements oe =
           config::read_elements(sc, q, f.earth, config::OrbitPhase::kArgumentOfLatitude);
-      MeanElements& m = gr.sats[static_cast<std::size_t>(r)];
+      formation::MeanElements& m = gr.sats[static_cast<std::size_t>(r)];
       m.a_m = oe.a_m;
       m.e = oe.e;
       m.i_rad = oe.i_rad;
@@ -102,7 +80,7 @@ std::vector<std::string> read_groups(const config::Scenario& sc, FormationSpec& 
 
 // The reference group and the threatened satellite, by name.
 void read_names(const config::Scenario& sc, const std::vector<std::string>& names,
-                PlanInputs& in) {
+                formation::PlanInputs& in) {
   const std::string ref = sc.get_enum("formation.reference_group", names);
   const std::string tg = sc.get_enum("conjunction.group", names);
   for (std::size_t g = 0; g < names.size(); ++g) {
@@ -110,32 +88,26 @@ void read_names(const config::Scenario& sc, const std::vector<std::string>& name
     if (names[g] == tg) in.threatened.group = g;
   }
   const std::string role = sc.get_enum("conjunction.satellite", {"chief", "deputy1", "deputy2"});
-  in.threatened.role = role == "chief" ? Role::kChief
-                                       : (role == "deputy1" ? Role::kDeputy1 : Role::kDeputy2);
+  in.threatened.role = role == "chief" ? formation::Role::kChief
+                                       : (role == "deputy1" ? formation::Role::kDeputy1 : formation::Role::kDeputy2);
 }
 
 }  // namespace
 
-ParamTable<FormationParams> formation_params() noexcept { return make_param_table(kFormationRows); }
-
-ParamTable<PropagationParams> propagation_params() noexcept {
-  return make_param_table(kPropagationRows);
-}
-
-PlanInputs read_plan_inputs(const config::Scenario& sc) {
-  PlanInputs in;
-  FormationSpec& f = in.spec;
+formation::PlanInputs read_plan_inputs(const config::Scenario& sc) {
+  formation::PlanInputs in;
+  formation::FormationSpec& f = in.spec;
   f.earth = config::read_earth(sc);
   read_formation_scalars(sc, f);
   const std::vector<std::string> names = read_groups(sc, f);
   read_names(sc, names, in);
-  ConjunctionSpec& c = in.conjunction;
-  read_table(sc, "conjunction.", conjunction_spec_params(), &c);
+  formation::ConjunctionSpec& c = in.conjunction;
+  read_table(sc, "conjunction.", formation::conjunction_spec_params(), &c);
   c.miss_rsw_m = sc.get_vec3("conjunction.miss_rsw_m", -1e5, 1e5);
   c.v_rel_rsw_mps = sc.get_vec3("conjunction.v_rel_rsw_mps", -2e4, 2e4);
-  read_table(sc, "maneuver.", maneuver_timing_params(), &in.timing);
-  PropagationParams pp;
-  read_table(sc, "propagation.", propagation_params(), &pp);
+  read_table(sc, "maneuver.", formation::maneuver_timing_params(), &in.timing);
+  formation::PropagationParams pp;
+  read_table(sc, "propagation.", formation::propagation_params(), &pp);
   in.propagation.integrator.rel_tol = pp.rel_tol;
   in.propagation.integrator.abs_tol = pp.abs_tol_m;
   in.propagation.samples_per_rev = pp.samples_per_rev;
@@ -151,4 +123,4 @@ PlanInputs read_plan_inputs(const config::Scenario& sc) {
   return in;
 }
 
-}  // namespace evade::formation
+}  // namespace evade::commands

@@ -4,8 +4,8 @@
 // and its text (each figure with its unit; constraint margins in rad or m).
 // Paper 003 (Duan You, Su Peng, Gao Yan, Qi Yajiang, Yang Shiqi, "Collision avoidance of
 // formation-flying satellites under multiple configuration constraints"); see
-// evade/formation/formation_command.hpp.
-#include "evade/formation/formation_command.hpp"
+// evade/commands/formation_command.hpp.
+#include "evade/commands/formation_command.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -16,18 +16,18 @@
 #include "evade/core/text_format.hpp"
 #include "evade/formation/burn_plan.hpp"
 
-namespace evade::formation {
+namespace evade::commands {
 namespace {
 
 nlohmann::json num(double v) {  // +inf (no limit) and NaN become null
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-bool is_angle(ConstraintKind k) {
-  return k == ConstraintKind::kInterGroupRaan || k == ConstraintKind::kInterGroupPhase;
+bool is_angle(formation::ConstraintKind k) {
+  return k == formation::ConstraintKind::kInterGroupRaan || k == formation::ConstraintKind::kInterGroupPhase;
 }
 
-nlohmann::json burn_json(const AppliedBurn& b) {
+nlohmann::json burn_json(const formation::AppliedBurn& b) {
   return {{"t_s", b.t_s},
           {"delta_a_m", b.delta_a_m},
           {"dv_tangential_mps", b.dv_mps},
@@ -39,11 +39,11 @@ nlohmann::json burn_json(const AppliedBurn& b) {
 nlohmann::json limits_json(const FormationResult& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t k = 0; k < r.limits.rows.size(); ++k) {
-    const ConstraintLimit& row = r.limits.rows[k];
+    const formation::ConstraintLimit& row = r.limits.rows[k];
     const bool ang = is_angle(row.def.kind);
     const double sc_out = ang ? kRadToDeg : 1.0;
     nlohmann::json jr = {{"constraint", row.def.name},
-                         {"kind", constraint_kind_name(row.def.kind)},
+                         {"kind", formation::constraint_kind_name(row.def.kind)},
                          {"unit", ang ? "deg" : "m"},
                          {"current_deviation", row.deviation * sc_out},
                          {"band", {row.def.lower * sc_out, row.def.upper * sc_out}},
@@ -61,7 +61,7 @@ nlohmann::json limits_json(const FormationResult& r) {
   return rows;
 }
 
-nlohmann::json option_json(const DirectionOption& d) {
+nlohmann::json option_json(const formation::DirectionOption& d) {
   return {{"required_delta_a_m", num(d.required_delta_a_m)},
           {"limit_m", num(d.limit_m)},
           {"feasible", d.feasible},
@@ -70,9 +70,9 @@ nlohmann::json option_json(const DirectionOption& d) {
           {"violated_constraints", d.violated}};
 }
 
-nlohmann::json decision_json(const Decision& dec, const PlanInputs& in) {
+nlohmann::json decision_json(const formation::Decision& dec, const formation::PlanInputs& in) {
   nlohmann::json jb = nlohmann::json::array();
-  for (const AppliedBurn& b : dec.burns) jb.push_back(burn_json(b));
+  for (const formation::AppliedBurn& b : dec.burns) jb.push_back(burn_json(b));
   return {{"maneuver_needed", dec.maneuver_needed},
           {"feasible", dec.feasible},
           {"direction", dec.direction},
@@ -91,10 +91,10 @@ nlohmann::json decision_json(const Decision& dec, const PlanInputs& in) {
           {"summary", dec.summary}};
 }
 
-nlohmann::json verification_json(const Verification& ver, const LimitsResult& lim) {
+nlohmann::json verification_json(const formation::Verification& ver, const formation::LimitsResult& lim) {
   nlohmann::json vr = nlohmann::json::array();
   for (std::size_t r = 0; r < ver.rows.size(); ++r) {
-    const ConstraintCheck& c = ver.rows[r];
+    const formation::ConstraintCheck& c = ver.rows[r];
     const double sc_out = is_angle(lim.rows[r].def.kind) ? kRadToDeg : 1.0;
     vr.push_back({{"constraint", c.name},
                   {"unit", is_angle(lim.rows[r].def.kind) ? "deg" : "m"},
@@ -119,11 +119,11 @@ void say(const FormationTextSink& sink, const char* line) {
 
 // Table 1 (analytic limits; the numerical ones beside them when computed).
 std::string limits_text(const FormationResult& r) {
-  const LimitsResult& lim = r.limits;
+  const formation::LimitsResult& lim = r.limits;
   std::string t = format_text("  %-34s %12s %12s%s\n", "Table 1 constraint", "raise_max_m", "lower_max_m",
                          r.numerical ? "  numerical_raise_m numerical_lower_m" : "");
   for (std::size_t k = 0; k < lim.rows.size(); ++k) {
-    const ConstraintLimit& row = lim.rows[k];
+    const formation::ConstraintLimit& row = lim.rows[k];
     t += format_text("  %-34s %12.3f %12.3f", row.def.name.c_str(), row.raise_max_m, row.lower_max_m);
     if (r.numerical) {
       t += format_text("  %17.3f %17.3f", r.numerical_limits[k].raise_max_m,
@@ -135,9 +135,9 @@ std::string limits_text(const FormationResult& r) {
 }
 
 std::string decision_text(const FormationResult& r) {
-  const Decision& dec = r.decision;
+  const formation::Decision& dec = r.decision;
   std::string t = format_text("  decision: %s\n", dec.summary.c_str());
-  for (const AppliedBurn& b : dec.burns) {
+  for (const formation::AppliedBurn& b : dec.burns) {
     t += format_text("    burn t = %.0f s after the epoch: delta_a %+.3f m, dv %+.5f m/s (tangential)\n",
                 b.t_s, b.delta_a_m, b.dv_mps);
   }
@@ -150,12 +150,12 @@ std::string decision_text(const FormationResult& r) {
 // Each constraint's smallest margin to its band over the window: radians for the
 // inter-group RAAN and phase, metres for the box constraints.
 std::string verification_text(const FormationResult& r) {
-  const Verification& ver = r.verification;
+  const formation::Verification& ver = r.verification;
   std::string t = format_text("  verification (two-body + J2): miss at TCA %.1f m (%s); constraints %s\n",
                          ver.miss_at_tca_m, ver.clears ? "clears" : "DOES NOT CLEAR",
                          ver.all_kept ? "all kept" : "SOME VIOLATED");
   for (std::size_t k = 0; k < ver.rows.size(); ++k) {
-    const ConstraintCheck& c = ver.rows[k];
+    const formation::ConstraintCheck& c = ver.rows[k];
     const bool ang = k < r.limits.rows.size() && is_angle(r.limits.rows[k].def.kind);
     t += format_text("    %-34s min margin %12.6g %-3s at t = %.0f s%s\n", c.name.c_str(), c.min_margin,
                 ang ? "rad" : "m", c.t_min_margin_s, c.kept ? "" : "  VIOLATED");
@@ -174,20 +174,20 @@ FormationRequest read_formation_request(const config::Scenario& sc) {
 }
 
 FormationResult run_formation(const FormationRequest& req) {
-  const PlanInputs& in = req.inputs;
+  const formation::PlanInputs& in = req.inputs;
   FormationResult r;
   r.inputs = in;
   r.scenario_used = req.scenario_used;
   const auto t0 = std::chrono::steady_clock::now();
-  r.limits = compute_limits(in.spec, in.threatened);
+  r.limits = formation::compute_limits(in.spec, in.threatened);
   say(req.progress, "plan formation: limits done; deciding (propagating)...");
-  r.decision = decide(in.spec, in.threatened, r.limits, in.conjunction, in.timing, in.propagation);
+  r.decision = formation::decide(in.spec, in.threatened, r.limits, in.conjunction, in.timing, in.propagation);
   say(req.progress, "plan formation: decision done; verifying over T days...");
-  r.verification = verify(in.spec, in.threatened, in.conjunction, r.decision, in.propagation);
+  r.verification = formation::verify(in.spec, in.threatened, in.conjunction, r.decision, in.propagation);
   if (req.numerical_limits) {
     say(req.progress, "plan formation: numerical limits (bisection on propagated margins)...");
     r.numerical = true;
-    r.numerical_limits = numerical_limits(in.spec, in.threatened, r.limits,
+    r.numerical_limits = formation::numerical_limits(in.spec, in.threatened, r.limits,
                                           r.decision.burn_time_s, in.propagation);
   }
   r.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -195,12 +195,12 @@ FormationResult run_formation(const FormationRequest& req) {
 }
 
 BurnPlan make_burn_plan(const FormationResult& r, std::int64_t plan_id) {
-  const PlanInputs& in = r.inputs;
-  return make_burn_plan(in.spec, in.threatened, r.decision, in.propagation, plan_id);
+  const formation::PlanInputs& in = r.inputs;
+  return formation::make_burn_plan(in.spec, in.threatened, r.decision, in.propagation, plan_id);
 }
 
 nlohmann::json to_json(const FormationResult& r) {
-  const PlanInputs& in = r.inputs;
+  const formation::PlanInputs& in = r.inputs;
   nlohmann::json j;
   j["paper"] = "003 Duan et al., formation collision avoidance by small semi-major-axis change";
   j["threatened"] = in.spec.sat_name(in.threatened);
@@ -224,7 +224,7 @@ nlohmann::json to_json(const FormationResult& r) {
 }
 
 std::string to_text(const FormationResult& r) {
-  const LimitsResult& lim = r.limits;
+  const formation::LimitsResult& lim = r.limits;
   std::string t = format_text("evade plan formation (paper 003): threatened %s, T = %.2f days\n",
                          r.inputs.spec.sat_name(r.inputs.threatened).c_str(),
                          r.inputs.spec.horizon_days);
@@ -234,4 +234,4 @@ std::string to_text(const FormationResult& r) {
   return t + limits_text(r) + decision_text(r) + verification_text(r);
 }
 
-}  // namespace evade::formation
+}  // namespace evade::commands

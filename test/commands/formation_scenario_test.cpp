@@ -9,10 +9,12 @@
 #include <gtest/gtest.h>
 
 #include "evade/core/earth_params.hpp"
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/commands/formation_scenario.hpp"
 
 namespace evade::formation {
 namespace {
+
+using namespace evade::commands;
 
 config::Scenario seed3_with(const std::string& assignment) {
   config::Scenario sc = config::Scenario::load("seed3");

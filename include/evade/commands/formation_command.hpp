@@ -20,17 +20,17 @@
 
 #include "evade/config/scenario.hpp"
 #include "evade/core/burn_plan.hpp"
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/commands/formation_scenario.hpp"
 #include "evade/formation/limits.hpp"
 #include "evade/formation/verification.hpp"
 
-namespace evade::formation {
+namespace evade::commands {
 
 /// Text sink for progress lines (e.g. stderr); empty: silent.
 using FormationTextSink = std::function<void(const std::string&)>;
 
 struct FormationRequest {
-  PlanInputs inputs;              ///< formation, threatened satellite, conjunction, timing
+  formation::PlanInputs inputs;   ///< formation, threatened satellite, conjunction, timing
   bool numerical_limits = false;  ///< also Table 1 by bisection on propagated margins (slower)
   nlohmann::json scenario_used = nlohmann::json::object();  ///< every scenario value read
   FormationTextSink progress;     ///< one line as each step starts; empty: none
@@ -41,13 +41,13 @@ struct FormationRequest {
 FormationRequest read_formation_request(const config::Scenario& sc);
 
 struct FormationResult {
-  PlanInputs inputs;
-  LimitsResult limits;                               ///< Table 1 (analytic)
-  Decision decision;
-  Verification verification;
-  bool numerical = false;                            ///< numerical_limits below were computed
-  std::vector<NumericalLimitRow> numerical_limits;   ///< one per row of limits.rows
-  double runtime_s = 0.0;                            ///< wall time of the whole plan [s]
+  formation::PlanInputs inputs;
+  formation::LimitsResult limits;  ///< Table 1 (analytic)
+  formation::Decision decision;
+  formation::Verification verification;
+  bool numerical = false;          ///< numerical_limits below were computed
+  std::vector<formation::NumericalLimitRow> numerical_limits;  ///< one per row of limits.rows
+  double runtime_s = 0.0;          ///< wall time of the whole plan [s]
   nlohmann::json scenario_used = nlohmann::json::object();
 };
 
@@ -55,7 +55,8 @@ struct FormationResult {
 /// std::invalid_argument for bad inputs, std::runtime_error when a propagation fails.
 FormationResult run_formation(const FormationRequest& req);
 
-/// The decision's two burns as a plan numbered plan_id (make_burn_plan of burn_plan.hpp).
+/// The decision's two burns as a plan numbered plan_id (formation::make_burn_plan of
+/// formation/burn_plan.hpp).
 /// Throws std::invalid_argument when there is nothing to fly (see there).
 BurnPlan make_burn_plan(const FormationResult& r, std::int64_t plan_id);
 
@@ -66,4 +67,4 @@ nlohmann::json to_json(const FormationResult& r);
 /// tangential Δv in m/s), the verification with each constraint's minimum margin and unit.
 std::string to_text(const FormationResult& r);
 
-}  // namespace evade::formation
+}  // namespace evade::commands

@@ -8,10 +8,12 @@
 #include <gtest/gtest.h>
 
 #include "evade/config/scenario.hpp"
-#include "evade/formation/formation_command.hpp"
+#include "evade/commands/formation_command.hpp"
 
 namespace evade::formation {
 namespace {
+
+using namespace evade::commands;
 
 const FormationResult& seed3_result() {
   static const FormationResult r =
