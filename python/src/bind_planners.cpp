@@ -21,7 +21,7 @@
 #include "evade/core/burn_plan.hpp"
 #include "evade/commands/formation_command.hpp"
 #include "evade/observability/burn_plan.hpp"
-#include "evade/observability/observability_command.hpp"
+#include "evade/commands/observability_command.hpp"
 #include "evade/sim/plan_file.hpp"
 #include "evade/threat/burn_plan.hpp"
 #include "evade/commands/threat_area_command.hpp"
@@ -108,17 +108,17 @@ nb::tuple formation_plan(const std::string& scenario, const std::vector<std::str
 
 nb::tuple observability_plan(const std::string& scenario, const std::vector<std::string>& sets,
                              const std::string& objective, long seed, std::int64_t plan_id) {
-  observability::ObservabilityOverrides ov;
+  commands::ObservabilityOverrides ov;
   ov.objective = objective;
   ov.seed = seed;
-  observability::ObservabilityRequest req =
-      observability::read_observability_request(load_scenario(scenario, sets), ov);
+  commands::ObservabilityRequest req =
+      commands::read_observability_request(load_scenario(scenario, sets), ov);
   nlohmann::json j;
   BurnPlan plan;
   {
     nb::gil_scoped_release unlocked;
-    const observability::ObservabilityResult r = observability::run_observability(req);
-    j = observability::to_json(r);
+    const commands::ObservabilityResult r = commands::run_observability(req);
+    j = commands::to_json(r);
     plan = observability::make_burn_plan(r.plan, plan_id);
   }
   return result_pair(j, plan);

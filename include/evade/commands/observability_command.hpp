@@ -1,11 +1,11 @@
 // `evade plan observability` as a library call: the observability-minimizing evasive burn of
 // paper 004 (Yu, Wang, Zhou, "Anti-rendezvous evasive maneuver considering spatial
 // geometry"; eq. 23 and §3). read_observability_request reads the scenario (every key and
-// its range: observability_params.hpp, Earth through the Earth table), run_observability
+// its range: observability/observability_params.hpp, Earth through the Earth table), run_observability
 // samples the problem, plans with NLopt ISRES (+ local polish) over the chosen objective
-// (planner.hpp) and compares the plan with no burn and the paper's directions
+// (observability/planner.hpp) and compares the plan with no burn and the paper's directions
 // (compare_with_paper); to_json and to_text are the command's two outputs. Publishing the
-// plan (make_burn_plan, burn_plan.hpp) stays with the caller: this library is LCM-free.
+// plan (observability::make_burn_plan, observability/burn_plan.hpp) stays with the caller: this library is LCM-free.
 //
 // Frames: dv_lvlh_mps in RSW (x radial out, y along track, z orbit normal); θ, ε and
 // dv_paper_mps in the paper frame P (x to the Earth's centre, y = −along track, z normal);
@@ -23,7 +23,7 @@
 #include "evade/observability/planner.hpp"
 #include "evade/observability/problem.hpp"
 
-namespace evade::observability {
+namespace evade::commands {
 
 /// Command-line values that replace a scenario key (empty / negative: the scenario's).
 struct ObservabilityOverrides {
@@ -33,11 +33,11 @@ struct ObservabilityOverrides {
 
 /// Everything the command needs, in SI units (frames as in the file comment).
 struct ObservabilityRequest {
-  ObservabilityProblem problem;  ///< geometry, burn bounds, observation window (paper §3)
-  ObjectiveKind objective = ObjectiveKind::kPaper;
-  EstimationConfig estimation;   ///< the chaser's angles-only estimator
-  IsresOptions isres;            ///< seed, budgets, polish; progress: the caller's hook
-  PaperDirections paper;         ///< the paper's optimum and its directions A and B
+  observability::ObservabilityProblem problem;  ///< geometry, burn bounds, window (paper §3)
+  observability::ObjectiveKind objective = observability::ObjectiveKind::kPaper;
+  observability::EstimationConfig estimation;  ///< the chaser's angles-only estimator
+  observability::IsresOptions isres;     ///< seed, budgets, polish; progress: the caller's hook
+  observability::PaperDirections paper;  ///< the paper's optimum and its directions A and B
   double paper_f = 0.0;          ///< the paper's value of eq. 23 at its optimum (echoed)
   std::string scenario;          ///< the scenario's source (echoed)
   nlohmann::json used;           ///< every scenario key read, with its value (echoed)
@@ -53,11 +53,11 @@ ObservabilityRequest read_observability_request(const config::Scenario& sc,
                                                 const ObservabilityOverrides& overrides = {});
 
 struct ObservabilityResult {
-  ObjectiveKind objective = ObjectiveKind::kPaper;
-  PlanResult plan;             ///< the planner's optimum, raw ISRES point, evaluations
-  PlanComparison comparison;   ///< optimum, no burn, paper optimum, A, B; thinned history
-  IsresOptions isres;          ///< the options the plan ran with (echoed)
-  PaperDirections paper;       ///< echoed
+  observability::ObjectiveKind objective = observability::ObjectiveKind::kPaper;
+  observability::PlanResult plan;  ///< the planner's optimum, raw ISRES point, evaluations
+  observability::PlanComparison comparison;  ///< optimum, no burn, paper, A, B; thinned history
+  observability::IsresOptions isres;     ///< the options the plan ran with (echoed)
+  observability::PaperDirections paper;  ///< echoed
   double paper_f = 0.0;        ///< echoed
   double runtime_s = 0.0;      ///< wall time of the plan (ISRES + polish) [s]
   std::size_t samples = 0;     ///< measurement samples t_k = k dt, k = 0..N
@@ -78,4 +78,4 @@ nlohmann::json to_json(const ObservabilityResult& r);
 /// direction's value, largest azimuth change and estimate major axis.
 std::string to_text(const ObservabilityResult& r);
 
-}  // namespace evade::observability
+}  // namespace evade::commands

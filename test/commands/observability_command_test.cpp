@@ -13,12 +13,14 @@
 
 #include "evade/config/read_params.hpp"
 #include "evade/config/scenario.hpp"
-#include "evade/observability/observability_command.hpp"
+#include "evade/commands/observability_command.hpp"
 #include "evade/observability/observability_params.hpp"
 #include "seed4_problem.hpp"
 
 namespace evade::observability {
 namespace {
+
+using namespace evade::commands;
 
 // seed4 with `--set` style overrides.
 config::Scenario seed4_with(const std::vector<std::string>& sets) {
