@@ -22,7 +22,7 @@
 #include "evade/commands/formation_command.hpp"
 #include "evade/observability/burn_plan.hpp"
 #include "evade/commands/observability_command.hpp"
-#include "evade/sim/plan_file.hpp"
+#include "evade/commands/plan_file.hpp"
 #include "evade/threat/burn_plan.hpp"
 #include "evade/commands/threat_area_command.hpp"
 
@@ -30,7 +30,7 @@ namespace evade::python {
 namespace {
 
 // The names of the plan file and of the observability objectives, from their one table each.
-std::string source_name(int source) { return sim::plan_source_name(source); }
+std::string source_name(int source) { return commands::plan_source_name(source); }
 std::string objective_name(int objective) { return observability::plan_objective_name(objective); }
 
 std::size_t impulse_count(const BurnPlan& p) {

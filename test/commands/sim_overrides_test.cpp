@@ -8,7 +8,7 @@
 
 #include "evade/config/param_flags.hpp"
 #include "evade/config/scenario.hpp"
-#include "evade/sim/sim_overrides.hpp"
+#include "evade/commands/sim_overrides.hpp"
 
 namespace {
 
@@ -17,9 +17,9 @@ using namespace evade;
 TEST(SimOverrides, NothingGivenKeepsTheScenario) {
   config::Scenario plain = config::Scenario::load("seed0");
   config::Scenario sc = config::Scenario::load("seed0");
-  sim::apply_sim_overrides(sim::SimOverrides{}, &sc);
-  const sim::SimConfig a = sim::read_sim_config(plain);
-  const sim::SimConfig b = sim::read_sim_config(sc);
+  commands::apply_sim_overrides(commands::SimOverrides{}, &sc);
+  const sim::SimConfig a = commands::read_sim_config(plain);
+  const sim::SimConfig b = commands::read_sim_config(sc);
   EXPECT_EQ(a.guidance.max_accel_mps2, b.guidance.max_accel_mps2);
   EXPECT_EQ(a.encounter.detect_before_tca_s, b.encounter.detect_before_tca_s);
   EXPECT_EQ(a.sensor.noise_rad, b.sensor.noise_rad);
@@ -29,14 +29,14 @@ TEST(SimOverrides, NothingGivenKeepsTheScenario) {
 
 TEST(SimOverrides, EachValueReplacesItsKeyExactly) {
   config::Scenario sc = config::Scenario::load("seed0");
-  sim::SimOverrides o;
+  commands::SimOverrides o;
   // Not a short decimal: must survive the text round trip.
   o.params.push_back(config::param_override_text("guidance.max_accel_mps2", 0.1 + 0.2));
   o.params.push_back("encounter.detect_before_tca_s=12.5");
   o.params.push_back("sensor.rate_hz=25");
   o.params.push_back("guidance.rate_hz=20");
-  sim::apply_sim_overrides(o, &sc);
-  const sim::SimConfig c = sim::read_sim_config(sc);
+  commands::apply_sim_overrides(o, &sc);
+  const sim::SimConfig c = commands::read_sim_config(sc);
   EXPECT_EQ(c.guidance.max_accel_mps2, 0.1 + 0.2);
   EXPECT_EQ(c.encounter.detect_before_tca_s, 12.5);
   EXPECT_EQ(c.sensor.rate_hz, 25.0);
@@ -47,42 +47,42 @@ TEST(SimOverrides, EachValueReplacesItsKeyExactly) {
 
 TEST(SimOverrides, AngleNoiseAloneSelectsTheAnglesOnlySensor) {
   config::Scenario sc = config::Scenario::load("seed0");
-  sim::SimOverrides o;
+  commands::SimOverrides o;
   o.params.push_back("sensor.noise_rad=5e-05");
-  sim::apply_sim_overrides(o, &sc);
-  const sim::SimConfig c = sim::read_sim_config(sc);
+  commands::apply_sim_overrides(o, &sc);
+  const sim::SimConfig c = commands::read_sim_config(sc);
   EXPECT_EQ(c.sensor.noise_rad, 50e-6);
   EXPECT_FALSE(c.sensor.has_rates);
 }
 
 TEST(SimOverrides, AngleAndRateNoiseKeepTheMeasuredRates) {
   config::Scenario sc = config::Scenario::load("seed0");
-  sim::SimOverrides o;
+  commands::SimOverrides o;
   o.params.push_back("sensor.noise_rad=5e-05");
   o.params.push_back("sensor.rate_noise_radps=1e-06");
-  sim::apply_sim_overrides(o, &sc);
-  const sim::SimConfig c = sim::read_sim_config(sc);
+  commands::apply_sim_overrides(o, &sc);
+  const sim::SimConfig c = commands::read_sim_config(sc);
   EXPECT_TRUE(c.sensor.has_rates);
   EXPECT_EQ(c.sensor.rate_noise_radps, 1e-6);
 }
 
 TEST(SimOverrides, NoRatesSelectsAnglesOnlyWithoutNoise) {
   config::Scenario sc = config::Scenario::load("seed0");
-  sim::SimOverrides o;
+  commands::SimOverrides o;
   o.no_rates = true;
-  sim::apply_sim_overrides(o, &sc);
-  const sim::SimConfig c = sim::read_sim_config(sc);
+  commands::apply_sim_overrides(o, &sc);
+  const sim::SimConfig c = commands::read_sim_config(sc);
   EXPECT_FALSE(c.sensor.has_rates);
   EXPECT_EQ(c.sensor.noise_rad, 0.0);
 }
 
 TEST(SimOverrides, OutOfRangeValueIsNamedByItsKey) {
   config::Scenario sc = config::Scenario::load("seed0");
-  sim::SimOverrides o;
+  commands::SimOverrides o;
   o.params.push_back("guidance.max_accel_mps2=-1");
-  sim::apply_sim_overrides(o, &sc);
+  commands::apply_sim_overrides(o, &sc);
   try {
-    (void)sim::read_sim_config(sc);
+    (void)commands::read_sim_config(sc);
     FAIL() << "expected an error naming guidance.max_accel_mps2";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("guidance.max_accel_mps2"), std::string::npos)
@@ -94,7 +94,7 @@ TEST(SimOverrides, ReadSimConfigRejectsAnUnusedKey) {
   config::Scenario sc = config::Scenario::load("seed0");
   sc.apply_override("sensor.noise=1e-6");
   try {
-    (void)sim::read_sim_config(sc);
+    (void)commands::read_sim_config(sc);
     FAIL() << "expected an error naming sensor.noise";
   } catch (const config::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("sensor.noise"), std::string::npos) << e.what();

@@ -17,10 +17,10 @@
 #include "evade/guidance/plan_executor.hpp"
 #include "evade/sim/sim_config.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 
 struct SimPlanRequest {
-  SimConfig config;              ///< the scenario's simulation (read_sim_plan_request)
+  sim::SimConfig config;         ///< the scenario's simulation (read_sim_plan_request)
   std::string scenario_source;   ///< the scenario's name or file
   nlohmann::json scenario_used;  ///< every scenario key read, with its value
   std::string plan_file;         ///< the burn-plan file to fly
@@ -74,4 +74,4 @@ nlohmann::json to_json(const SimPlanResult& r);
 /// One line per impulse: planned and delivered |Δv| [m/s], burn interval [s after start].
 std::string to_text(const SimPlanResult& r);
 
-}  // namespace evade::sim
+}  // namespace evade::commands

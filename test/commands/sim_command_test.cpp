@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "evade/config/scenario.hpp"
-#include "evade/sim/plan_file.hpp"
-#include "evade/sim/sim_command.hpp"
-#include "evade/sim/sim_plan_command.hpp"
+#include "evade/commands/plan_file.hpp"
+#include "evade/commands/sim_command.hpp"
+#include "evade/commands/sim_plan_command.hpp"
 
 namespace {
 
@@ -27,8 +27,8 @@ config::Scenario seed0(double accel_mps2, double detect_s) {
 }
 
 TEST(SimCommand, Seed0MissIsPaper000Table2) {
-  const sim::SimCommandRequest req = sim::read_sim_command_request(seed0(1.0, 10.0));
-  const sim::SimCommandResult r = sim::run_sim_command(req);
+  const commands::SimCommandRequest req = commands::read_sim_command_request(seed0(1.0, 10.0));
+  const commands::SimCommandResult r = commands::run_sim_command(req);
   ASSERT_TRUE(r.run.closest_approach_found);
   // Paper 000 Table 2: a = 1 m/s², detected 10 s before TCA: miss 50.0021 m (2 cm at 50 Hz).
   EXPECT_NEAR(r.run.miss_m, 50.0021, 0.02);
@@ -38,13 +38,13 @@ TEST(SimCommand, Seed0MissIsPaper000Table2) {
   EXPECT_TRUE(r.warnings.empty());
   EXPECT_EQ(r.parameters.accel_mps2, 1.0);
   EXPECT_EQ(r.parameters.scenario, "seed0");
-  EXPECT_NE(sim::to_text(r).find("miss 50.00"), std::string::npos);
+  EXPECT_NE(commands::to_text(r).find("miss 50.00"), std::string::npos);
 }
 
 TEST(SimCommand, JsonHasTheKeysTheCliPrints) {
-  const sim::SimCommandResult r =
-      sim::run_sim_command(sim::read_sim_command_request(seed0(1.0, 10.0)));
-  const nlohmann::json j = sim::to_json(r);
+  const commands::SimCommandResult r =
+      commands::run_sim_command(commands::read_sim_command_request(seed0(1.0, 10.0)));
+  const nlohmann::json j = commands::to_json(r);
   for (const char* key :
        {"miss_m", "tca_s", "dv_mps", "burn_s", "cycles", "start_s", "nominal_tca_s",
         "nominal_miss_m", "measurements", "dropouts", "guidance", "final_mode", "final_reason",
@@ -63,7 +63,7 @@ TEST(SimCommand, JsonHasTheKeysTheCliPrints) {
 }
 
 TEST(SimCommand, GuidanceLinkAndMonteCarloRunnerAreTheCallers) {
-  sim::SimCommandRequest req = sim::read_sim_command_request(seed0(1.0, 10.0));
+  commands::SimCommandRequest req = commands::read_sim_command_request(seed0(1.0, 10.0));
   int endpoints = 0;
   req.guidance.name = "lcm";
   req.guidance.sensors_signed = false;
@@ -80,27 +80,27 @@ TEST(SimCommand, GuidanceLinkAndMonteCarloRunnerAreTheCallers) {
     c.ranks = 2;
     return c;
   };
-  const sim::SimCommandResult r = sim::run_sim_command(req);
+  const commands::SimCommandResult r = commands::run_sim_command(req);
   EXPECT_EQ(endpoints, 1);
-  const nlohmann::json j = sim::to_json(r);
+  const nlohmann::json j = commands::to_json(r);
   EXPECT_EQ(j["guidance"], "lcm");
   EXPECT_EQ(j["sensors_signed"], false);
   EXPECT_EQ(j["runs"], 3);
   EXPECT_EQ(j["ranks"], 2);
   EXPECT_EQ(j["seed"], 7);
   EXPECT_EQ(j["miss_m_p50"], 45.0);
-  EXPECT_NE(sim::to_text(r).find("monte carlo 3 runs"), std::string::npos);
+  EXPECT_NE(commands::to_text(r).find("monte carlo 3 runs"), std::string::npos);
 }
 
 TEST(SimCommand, MonteCarloInThisProcessByDefault) {
   config::Scenario sc = seed0(1.0, 10.0);
   sc.apply_override("sensor.noise_rad=5e-05");
-  sim::SimCommandRequest req = sim::read_sim_command_request(sc);
+  commands::SimCommandRequest req = commands::read_sim_command_request(sc);
   req.runs = 4;
   req.seed = 3;
   int calls = 0;
   req.on_progress = [&calls](int, int) { ++calls; };
-  const sim::SimCommandResult r = sim::run_sim_command(req);
+  const commands::SimCommandResult r = commands::run_sim_command(req);
   ASSERT_TRUE(r.monte_carlo.has_value());
   EXPECT_EQ(calls, 4);
   EXPECT_EQ(r.monte_carlo->ranks, 1);
@@ -110,23 +110,23 @@ TEST(SimCommand, MonteCarloInThisProcessByDefault) {
 
 // A 2 m/s along-track impulse at the plan's t = 0, 10 s into the run (the CLI test's case).
 TEST(SimPlanCommand, ImpulseDeliveredAsPlannedAndJsonKeys) {
-  sim::PlanFile f;
+  commands::PlanFile f;
   f.plan.plan_id = 1;
   f.plan.n_impulses = 1;
   f.plan.impulses[0].t_s = 0.0;
   f.plan.impulses[0].dv_rsw_mps = Vec3(0.0, 2.0, 0.0);
   const std::string path = ::testing::TempDir() + "sim_plan_command_test.json";
-  sim::write_plan_file(path, f);
-  sim::SimPlanRequest req = sim::read_sim_plan_request(config::Scenario::load("seed0"));
+  commands::write_plan_file(path, f);
+  commands::SimPlanRequest req = commands::read_sim_plan_request(config::Scenario::load("seed0"));
   req.plan_file = path;
   req.plan_epoch_s = 10.0;
-  const sim::SimPlanResult r = sim::run_sim_plan(req);
+  const commands::SimPlanResult r = commands::run_sim_plan(req);
   ASSERT_EQ(r.impulses.size(), 1u);
   EXPECT_TRUE(r.all_delivered);
   EXPECT_TRUE(r.warnings.empty());
   EXPECT_NEAR(r.impulses[0].dv_delivered_mps, 2.0, 1e-5);
   EXPECT_NEAR(r.impulses[0].centre_offset_s, 0.0, 1e-9);
-  const nlohmann::json j = sim::to_json(r);
+  const nlohmann::json j = commands::to_json(r);
   for (const char* key : {"guidance", "plan", "impulses", "burns_delivered", "cycles",
                           "duration_s", "guidance_rate_hz", "scenario", "scenario_used"}) {
     EXPECT_TRUE(j.contains(key)) << key;
@@ -134,21 +134,21 @@ TEST(SimPlanCommand, ImpulseDeliveredAsPlannedAndJsonKeys) {
   EXPECT_EQ(j["guidance"], "in_process_plan");
   EXPECT_EQ(j["plan"]["frame"], "rsw");
   EXPECT_EQ(j["impulses"][0]["dv_planned_rsw_mps"].size(), 3u);
-  EXPECT_NE(sim::to_text(r).find("impulse at 10.000 s: planned 2.000000000 m/s"),
+  EXPECT_NE(commands::to_text(r).find("impulse at 10.000 s: planned 2.000000000 m/s"),
             std::string::npos);
   (void)std::remove(path.c_str());
 }
 
 TEST(SimPlanCommand, BurnBeforeTheRunStartNamesTheEpochFlag) {
-  sim::PlanFile f;
+  commands::PlanFile f;
   f.plan.n_impulses = 1;
   f.plan.impulses[0].dv_rsw_mps = Vec3(0.0, 2.0, 0.0);
   const std::string path = ::testing::TempDir() + "sim_plan_command_t0.json";
-  sim::write_plan_file(path, f);
-  sim::SimPlanRequest req = sim::read_sim_plan_request(config::Scenario::load("seed0"));
+  commands::write_plan_file(path, f);
+  commands::SimPlanRequest req = commands::read_sim_plan_request(config::Scenario::load("seed0"));
   req.plan_file = path;
   try {
-    (void)sim::run_sim_plan(req);
+    (void)commands::run_sim_plan(req);
     ADD_FAILURE() << "a burn at the run's start was flown";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("--plan-epoch-s S starts it later"), std::string::npos);

@@ -13,7 +13,7 @@
 #include "evade/config/scenario.hpp"
 #include "evade/sim/sim_config.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 
 /// What the command line gave for one run: the parameter flags' overrides ("key=value",
 /// already checked against their keys' declarations: evade/config/param_flags.hpp) and
@@ -29,6 +29,6 @@ void apply_sim_overrides(const SimOverrides& o, config::Scenario* sc);
 /// The SimConfig of sc: sim_config_from_scenario, then check_all_used() (no other keys are
 /// read for a run) and SimConfig::validate(). Throws config::ConfigError or
 /// std::invalid_argument naming the key.
-SimConfig read_sim_config(const config::Scenario& sc);
+sim::SimConfig read_sim_config(const config::Scenario& sc);
 
-}  // namespace evade::sim
+}  // namespace evade::commands

@@ -1,7 +1,7 @@
 // `evade sim --plan FILE` as a library call (sim_plan_command.hpp): a burn-plan file flown
 // by the in-process guidance law + plan executor on a scenario's objects, planned against
 // delivered Δv per impulse.
-#include "evade/sim/sim_plan_command.hpp"
+#include "evade/commands/sim_plan_command.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,14 +9,14 @@
 #include <string>
 
 #include "evade/config/json_values.hpp"
-#include "evade/sim/plan_file.hpp"
+#include "evade/commands/plan_file.hpp"
 #include "evade/sim/plan_run.hpp"
-#include "evade/sim/sim_overrides.hpp"
+#include "evade/commands/sim_overrides.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 namespace {
 
-ImpulseFlown impulse_flown(const ImpulsiveBurn& p, double epoch_s, const DeliveredBurn* b) {
+ImpulseFlown impulse_flown(const ImpulsiveBurn& p, double epoch_s, const sim::DeliveredBurn* b) {
   ImpulseFlown i;
   i.t_planned_s = epoch_s + p.t_s;
   i.dv_planned_mps = p.dv_rsw_mps.norm();
@@ -46,12 +46,12 @@ nlohmann::json impulse_json(const ImpulseFlown& i) {
 }
 
 // The run; the executor's rejection names the file and the plan's epoch.
-PlanRunResult fly(const SimPlanRequest& req, const PlanFile& f, const PlanRunConfig& run_cfg) {
+sim::PlanRunResult fly(const SimPlanRequest& req, const PlanFile& f, const sim::PlanRunConfig& run_cfg) {
   const std::int64_t epoch_us =
-      kPlanRunUtime0 + static_cast<std::int64_t>(std::llround(req.plan_epoch_s * 1e6));
-  const auto endpoint = make_in_process_plan_endpoint(req.config.guidance, f.plan, epoch_us, f.frame);
+      sim::kPlanRunUtime0 + static_cast<std::int64_t>(std::llround(req.plan_epoch_s * 1e6));
+  const auto endpoint = sim::make_in_process_plan_endpoint(req.config.guidance, f.plan, epoch_us, f.frame);
   try {
-    return run_plan_simulation(run_cfg, *endpoint);
+    return sim::run_plan_simulation(run_cfg, *endpoint);
   } catch (const std::invalid_argument& e) {  // the executor's rejection reason
     throw std::invalid_argument(std::string(e.what()) + " (plan file '" + req.plan_file +
                                 "', its t = 0 at " + std::to_string(req.plan_epoch_s) +
@@ -71,8 +71,8 @@ SimPlanRequest read_sim_plan_request(const config::Scenario& sc) {
 
 SimPlanResult run_sim_plan(const SimPlanRequest& req) {
   const PlanFile f = read_plan_file(req.plan_file);
-  const PlanRunConfig run_cfg = plan_run_config(req.config, f.plan, req.plan_epoch_s, req.after_s);
-  const PlanRunResult run = fly(req, f, run_cfg);
+  const sim::PlanRunConfig run_cfg = sim::plan_run_config(req.config, f.plan, req.plan_epoch_s, req.after_s);
+  const sim::PlanRunResult run = fly(req, f, run_cfg);
   SimPlanResult r;
   r.plan_file = req.plan_file;
   r.plan_id = f.plan.plan_id;
@@ -134,4 +134,4 @@ std::string to_text(const SimPlanResult& r) {
   return text;
 }
 
-}  // namespace evade::sim
+}  // namespace evade::commands

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "evade/config/scenario.hpp"
-#include "evade/sim/sim_csv.hpp"
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_csv.hpp"
+#include "evade/commands/sim_scenario.hpp"
 
 namespace {
 
@@ -40,19 +40,19 @@ sim::SimSample closing_sample() {
 
 TEST(SimCsv, ZemIsRangeSquaredTimesLosRateOverClosingSpeed) {
   const sim::SimSample s = closing_sample();
-  EXPECT_DOUBLE_EQ(sim::zem_true_m(s), 1000.0 * 1000.0 * 1e-3 / 100.0);
+  EXPECT_DOUBLE_EQ(commands::zem_true_m(s), 1000.0 * 1000.0 * 1e-3 / 100.0);
   sim::SimSample opening = s;
   opening.range_rate_mps = 100.0;
-  EXPECT_TRUE(std::isnan(sim::zem_true_m(opening)));
+  EXPECT_TRUE(std::isnan(commands::zem_true_m(opening)));
 }
 
 TEST(SimCsv, RowHasOneValuePerHeaderColumn) {
-  const std::vector<std::string> header = split(sim::sim_csv_header());
+  const std::vector<std::string> header = split(commands::sim_csv_header());
   EXPECT_EQ(header.size(), 39u);
   EXPECT_EQ(header.front(), "t_s");
   EXPECT_EQ(header[16], "zem_true_m");
   std::ostringstream os;
-  sim::write_sim_csv_row(os, closing_sample());
+  commands::write_sim_csv_row(os, closing_sample());
   const std::string row = os.str();
   ASSERT_FALSE(row.empty());
   EXPECT_EQ(row.back(), '\n');
@@ -65,7 +65,7 @@ TEST(SimCsv, RowHasOneValuePerHeaderColumn) {
 }
 
 TEST(SimCsv, RowsOfARunCarryItsTruth) {
-  sim::SimConfig c = sim::sim_config_from_scenario(config::Scenario::load("seed0"));
+  sim::SimConfig c = commands::sim_config_from_scenario(config::Scenario::load("seed0"));
   c.guidance.max_accel_mps2 = 1.0;
   c.encounter.detect_before_tca_s = 2.0;
   auto ep = sim::make_in_process_endpoint(c.guidance, true);
@@ -73,7 +73,7 @@ TEST(SimCsv, RowsOfARunCarryItsTruth) {
   std::vector<sim::SimSample> samples;
   const sim::SimResult r = sim::run_simulation(c, *ep, [&](const sim::SimSample& s) {
     samples.push_back(s);
-    sim::write_sim_csv_row(os, s);
+    commands::write_sim_csv_row(os, s);
   });
   ASSERT_TRUE(r.closest_approach_found);
   ASSERT_EQ(static_cast<long>(samples.size()), r.cycles);

@@ -1,6 +1,6 @@
 // Scenario → SimConfig: states and models here, every tunable through its parameter table
 // (sim_params.hpp, guidance_params.hpp, the Earth table). Defaults: the ideal sensor/actuator.
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_scenario.hpp"
 
 #include <cmath>
 
@@ -9,10 +9,10 @@
 #include "evade/guidance/guidance_params.hpp"
 #include "evade/sim/sim_params.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 
-SimConfig sim_config_from_scenario(const config::Scenario& sc) {
-  SimConfig c;
+sim::SimConfig sim_config_from_scenario(const config::Scenario& sc) {
+  sim::SimConfig c;
   constexpr double kR = 1e8;  // |r| bound [m]
   constexpr double kV = 1e5;  // |v| bound [m/s]
   if (sc.has("epoch_utc")) {
@@ -31,9 +31,9 @@ SimConfig sim_config_from_scenario(const config::Scenario& sc) {
   const std::string g = sc.get_enum("gravity", {"two_body", "two_body_j2"}, "two_body_j2");
   c.gravity = (g == "two_body") ? GravityModel::kTwoBody : GravityModel::kTwoBodyJ2;
   c.earth = config::read_earth(sc);
-  config::read_params(sc, "", sim_params(), &c);
+  config::read_params(sc, "", sim::sim_params(), &c);
   config::read_params(sc, "guidance.", guidance::guidance_params(), &c.guidance);
   return c;
 }
 
-}  // namespace evade::sim
+}  // namespace evade::commands

@@ -7,8 +7,8 @@
 #include "evade/config/scenario.hpp"
 #include "evade/sim/sim_config.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 
-SimConfig sim_config_from_scenario(const config::Scenario& sc);
+sim::SimConfig sim_config_from_scenario(const config::Scenario& sc);
 
-}  // namespace evade::sim
+}  // namespace evade::commands

@@ -1,19 +1,19 @@
 // `evade sim` as a library call (sim_command.hpp): the closed-loop evasion simulation of
 // paper 000 (Yao & Wang 2012, sec. 4 and Table 2), one run and an optional Monte Carlo over
 // noise seeds, with the command's JSON and text forms.
-#include "evade/sim/sim_command.hpp"
+#include "evade/commands/sim_command.hpp"
 
 #include <cstdio>
 #include <string>
 #include <utility>
 
 #include "evade/guidance/guidance_law.hpp"
-#include "evade/sim/sim_overrides.hpp"
+#include "evade/commands/sim_overrides.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 namespace {
 
-SimParametersUsed parameters_used(const SimConfig& cfg, const std::string& scenario) {
+SimParametersUsed parameters_used(const sim::SimConfig& cfg, const std::string& scenario) {
   SimParametersUsed p;
   p.accel_mps2 = cfg.guidance.max_accel_mps2;
   p.detect_before_tca_s = cfg.encounter.detect_before_tca_s;
@@ -28,7 +28,7 @@ SimParametersUsed parameters_used(const SimConfig& cfg, const std::string& scena
 }
 
 // A real-time run that fell behind the wall clock: how often and by how much.
-std::string late_warning(const RealtimeResult& r, double late_tolerance_s) {
+std::string late_warning(const sim::RealtimeResult& r, double late_tolerance_s) {
   char buf[320];
   (void)std::snprintf(buf, sizeof buf,
                       "fell behind the wall clock in %ld of %ld steps (by more than "
@@ -40,28 +40,28 @@ std::string late_warning(const RealtimeResult& r, double late_tolerance_s) {
 // The single run: real-time against req.guidance's link, or lockstep against its endpoint
 // (the in-process law when it has none).
 void run_single(const SimCommandRequest& req, SimCommandResult* out) {
-  const SimGuidanceLink& g = req.guidance;
+  const sim::SimGuidanceLink& g = req.guidance;
   if (g.make_realtime_link) {
-    const std::unique_ptr<RealtimeLink> link = g.make_realtime_link();
-    out->realtime = run_realtime_simulation(req.config, *link, req.on_sample);
+    const std::unique_ptr<sim::RealtimeLink> link = g.make_realtime_link();
+    out->realtime = sim::run_realtime_simulation(req.config, *link, req.on_sample);
     out->run = out->realtime->sim;
     if (out->realtime->late_steps > 0) {
       out->warnings.push_back(late_warning(*out->realtime, req.config.realtime.late_tolerance_s));
     }
     return;
   }
-  const std::unique_ptr<GuidanceEndpoint> endpoint =
+  const std::unique_ptr<sim::GuidanceEndpoint> endpoint =
       g.make_endpoint ? g.make_endpoint()
-                      : make_in_process_endpoint(req.config.guidance, req.config.guidance.armed);
-  out->run = run_simulation(req.config, *endpoint, req.on_sample);
+                      : sim::make_in_process_endpoint(req.config.guidance, req.config.guidance.armed);
+  out->run = sim::run_simulation(req.config, *endpoint, req.on_sample);
 }
 
-MonteCarloCampaign run_campaign(const SimCommandRequest& req) {
+sim::MonteCarloCampaign run_campaign(const SimCommandRequest& req) {
   if (req.monte_carlo) {
     return req.monte_carlo(req.config, req.runs, req.seed, req.threads, req.on_progress);
   }
-  MonteCarloCampaign c;
-  c.result = run_monte_carlo(req.config, req.runs, req.seed, req.threads, req.on_progress);
+  sim::MonteCarloCampaign c;
+  c.result = sim::run_monte_carlo(req.config, req.runs, req.seed, req.threads, req.on_progress);
   return c;
 }
 
@@ -86,7 +86,7 @@ void add_final_status(const guidance::GuidanceStatus& s, nlohmann::json* j) {
   (*j)["filter_reinits"] = s.filter_reinits;
 }
 
-void add_realtime(const RealtimeResult& r, nlohmann::json* j) {
+void add_realtime(const sim::RealtimeResult& r, nlohmann::json* j) {
   (*j)["command_age_ms_p50"] = r.command_age_ms_p50;
   (*j)["command_age_ms_p99"] = r.command_age_ms_p99;
   (*j)["command_age_ms_max"] = r.command_age_ms_max;
@@ -137,7 +137,7 @@ SimCommandResult run_sim_command(const SimCommandRequest& req) {
     return out;
   }
   if (req.runs > 0) {
-    MonteCarloCampaign c = run_campaign(req);
+    sim::MonteCarloCampaign c = run_campaign(req);
     out.reporting = c.reporting;
     out.monte_carlo = SimMonteCarloSummary{req.runs, req.seed, c.ranks, std::move(c.result)};
   }
@@ -175,7 +175,7 @@ std::string to_text(const SimCommandResult& r) {
                       r.run.burn_s, r.run.cycles);
   std::string text = buf;
   if (r.monte_carlo) {
-    const MonteCarloResult& m = r.monte_carlo->result;
+    const sim::MonteCarloResult& m = r.monte_carlo->result;
     (void)std::snprintf(buf, sizeof buf,
                         "monte carlo %d runs: miss p5 %.4f p50 %.4f p95 %.4f (min %.4f max "
                         "%.4f) m\n",
@@ -186,4 +186,4 @@ std::string to_text(const SimCommandResult& r) {
   return text;
 }
 
-}  // namespace evade::sim
+}  // namespace evade::commands

@@ -1,11 +1,11 @@
 // Run-time overrides of a simulation scenario (sim_overrides.hpp; paper 000 sec. 4–5).
-#include "evade/sim/sim_overrides.hpp"
+#include "evade/commands/sim_overrides.hpp"
 
 #include <string>
 
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_scenario.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 namespace {
 
 bool given(const SimOverrides& o, const std::string& key) {
@@ -24,11 +24,11 @@ void apply_sim_overrides(const SimOverrides& o, config::Scenario* sc) {
   }
 }
 
-SimConfig read_sim_config(const config::Scenario& sc) {
-  SimConfig cfg = sim_config_from_scenario(sc);
+sim::SimConfig read_sim_config(const config::Scenario& sc) {
+  sim::SimConfig cfg = sim_config_from_scenario(sc);
   sc.check_all_used();
   cfg.validate();
   return cfg;
 }
 
-}  // namespace evade::sim
+}  // namespace evade::commands

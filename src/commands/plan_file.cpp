@@ -1,5 +1,5 @@
 // The burn-plan file (plan_file.hpp): JSON with nlohmann::json, validated field by field.
-#include "evade/sim/plan_file.hpp"
+#include "evade/commands/plan_file.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -12,7 +12,7 @@
 
 #include "evade/config/json_values.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 namespace {
 
 using nlohmann::json;
@@ -173,4 +173,4 @@ void write_plan_file(const std::string& path, const PlanFile& f) {
     throw std::invalid_argument("plan file '" + path + "': cannot be written");
 }
 
-}  // namespace evade::sim
+}  // namespace evade::commands

@@ -1,18 +1,18 @@
 // CSV time history of a simulation run (sim_csv.hpp); true ZEM (paper 000 eq. 7, 12). The
 // columns are one table (sim_csv_columns): the header, the rows and the Python binding's
 // arrays are all read from it.
-#include "evade/sim/sim_csv.hpp"
+#include "evade/commands/sim_csv.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 
-namespace evade::sim {
+namespace evade::commands {
 namespace {
 
-Vec3 rel_eci_m(const SimSample& s) { return s.debris.r_eci_m - s.satellite.r_eci_m; }
+Vec3 rel_eci_m(const sim::SimSample& s) { return s.debris.r_eci_m - s.satellite.r_eci_m; }
 
-using S = const SimSample&;
+using S = const sim::SimSample&;
 // Each entry: the column's name (with its unit) and its value, a number or a name.
 constexpr SimCsvColumn kColumns[] = {
     {"t_s", [](S s) { return s.t_s; }, nullptr},
@@ -75,13 +75,13 @@ const char* sim_csv_header() noexcept {
   return h.c_str();
 }
 
-double zem_true_m(const SimSample& s) noexcept {
+double zem_true_m(const sim::SimSample& s) noexcept {
   return (s.range_rate_mps < 0.0)
              ? s.range_m * s.range_m * s.los_rate_true_radps / -s.range_rate_mps
              : NAN;
 }
 
-void write_sim_csv_row(std::ostream& os, const SimSample& s) {
+void write_sim_csv_row(std::ostream& os, const sim::SimSample& s) {
   os << std::setprecision(15);
   bool first = true;
   for (const SimCsvColumn& c : kColumns) {
@@ -93,4 +93,4 @@ void write_sim_csv_row(std::ostream& os, const SimSample& s) {
   os << '\n';
 }
 
-}  // namespace evade::sim
+}  // namespace evade::commands

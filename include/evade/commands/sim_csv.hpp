@@ -11,14 +11,14 @@
 
 #include "evade/sim/simulator.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 
 /// One column: its name (with its unit) and its value, a number (number != nullptr; flags as
 /// 0/1) or a name (text != nullptr: the guidance mode and reason).
 struct SimCsvColumn {
   const char* name;
-  double (*number)(const SimSample&);
-  const char* (*text)(const SimSample&);
+  double (*number)(const sim::SimSample&);
+  const char* (*text)(const sim::SimSample&);
 };
 
 /// The columns in order (*count of them): the one table of the CSV's columns.
@@ -28,9 +28,9 @@ const SimCsvColumn* sim_csv_columns(std::size_t* count) noexcept;
 const char* sim_csv_header() noexcept;
 
 /// True ZEM [m] of a sample: R² · los_rate / (−range_rate) while closing, NaN otherwise.
-double zem_true_m(const SimSample& s) noexcept;
+double zem_true_m(const sim::SimSample& s) noexcept;
 
 /// One row (15 significant digits, newline-terminated), columns as in sim_csv_header().
-void write_sim_csv_row(std::ostream& os, const SimSample& s);
+void write_sim_csv_row(std::ostream& os, const sim::SimSample& s);
 
-}  // namespace evade::sim
+}  // namespace evade::commands

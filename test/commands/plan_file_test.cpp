@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "evade/sim/plan_file.hpp"
+#include "evade/commands/plan_file.hpp"
 
-namespace evade::sim {
+namespace evade::commands {
 namespace {
 
 PlanFile two_burns() {
@@ -110,4 +110,4 @@ TEST(PlanFile, AFileThatCannotBeOpenedIsNamed) {
 }
 
 }  // namespace
-}  // namespace evade::sim
+}  // namespace evade::commands
