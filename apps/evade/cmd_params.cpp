@@ -11,7 +11,7 @@
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
+#include "evade/commands/screen_scenario.hpp"
 #include "evade/core/earth_params.hpp"
 #include "evade/commands/propagate_command.hpp"
 #include "evade/formation/decision.hpp"
@@ -55,7 +55,7 @@ std::string threat_and_screening_sections() {
   md += section("Threat area: evasion search (paper 001)", "`evade plan threat-area`", "",
                 threat::evasion_params());
   md += section("Screening span (paper 002)", "`evade screen`", "",
-                conjunction::screen_scenario_params());
+                commands::screen_scenario_params());
   md += section("Adaptive step (paper 002)", "`evade screen --method paper`", "paper_step.",
                 conjunction::paper_step_params());
   md += section("Robust screening", "`evade screen`", "robust.",

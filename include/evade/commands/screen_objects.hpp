@@ -19,18 +19,18 @@
 #include "evade/config/scenario.hpp"
 #include "evade/conjunction/types.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 
 /// Reads `objects.*` from a scenario. Throws config::ConfigError naming the key
 /// ("objects.3.e") for a missing, non-finite or out-of-range value, an unbound orbit or a
 /// perigee inside the Earth.
-std::vector<SpaceObject> objects_from_scenario(const config::Scenario& sc, const EarthModel& earth);
+std::vector<conjunction::SpaceObject> objects_from_scenario(const config::Scenario& sc, const EarthModel& earth);
 
 /// Parses CSV text (see above). Throws std::invalid_argument naming the line, object index
 /// and column for a bad value; then validate_objects() checks the orbits.
-std::vector<SpaceObject> objects_from_csv(const std::string& text, const EarthModel& earth);
+std::vector<conjunction::SpaceObject> objects_from_csv(const std::string& text, const EarthModel& earth);
 
 /// Writes events as CSV text (header: i,j,name_i,name_j,tca_s,miss_m,rel_speed_mps,collision,warning).
-std::string events_to_csv(const std::vector<Conjunction>& events, const std::vector<SpaceObject>& objects);
+std::string events_to_csv(const std::vector<conjunction::Conjunction>& events, const std::vector<conjunction::SpaceObject>& objects);
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

@@ -20,21 +20,21 @@
 #include "evade/conjunction/types.hpp"
 #include "evade/sgp4/mean_elements.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 
 /// Events of objects with states at t = 0 (so: the options of the screening, its force model).
 std::vector<assessment::ScreeningEvent> object_screening_events(
-    const std::vector<Conjunction>& events, const std::vector<SpaceObject>& objects,
-    const ScreenOptions& so, double epoch_utc_j2000_s);
+    const std::vector<conjunction::Conjunction>& events, const std::vector<conjunction::SpaceObject>& objects,
+    const conjunction::ScreenOptions& so, double epoch_utc_j2000_s);
 
 /// Events of an SGP4 catalog screening (s: the screening, elements: the catalog's element
 /// sets, for names and international designators).
 std::vector<assessment::ScreeningEvent> catalog_screening_events(
-    const std::vector<Conjunction>& events, const Sgp4Screening& s,
-    const std::vector<sgp4::MeanElements>& elements, const ScreenOptions& so);
+    const std::vector<conjunction::Conjunction>& events, const conjunction::Sgp4Screening& s,
+    const std::vector<sgp4::MeanElements>& elements, const conjunction::ScreenOptions& so);
 
 /// "58002B" (TLE columns 10-17) -> "1958-002B" (CCSDS 508.0-B-1 YYYY-NNNP{PP}); other text
 /// as it is.
 std::string ccsds_international_designator(const std::string& id);
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

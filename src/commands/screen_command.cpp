@@ -1,7 +1,7 @@
 // `evade screen` of objects (scenario, CSV, synthetic population) as a library call; see
 // screen_command.hpp. Paper 002 (Wang Xiaoyu 2006): --method paper is its adaptive Step
 // rule (paper_step.hpp), --method robust the no-miss screener (robust_screen.hpp).
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,13 +10,13 @@
 #include <stdexcept>
 #include <thread>
 
-#include "evade/conjunction/catalog.hpp"
+#include "evade/commands/screen_objects.hpp"
 #include "evade/conjunction/ephemeris.hpp"
 #include "evade/conjunction/population.hpp"
-#include "evade/conjunction/screening_events.hpp"
+#include "evade/commands/screening_events.hpp"
 #include "evade/core/epoch.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 namespace {
 
 std::string utc_of(double epoch_s, double t_s) {
@@ -35,12 +35,12 @@ void load_objects(const config::Scenario& sc, const ScreenObjectsSource& src,
                   ScreenObjectsRequest& req) {
   const ScreenScenario& in = req.scenario;
   if (src.population > 0) {
-    PopulationOptions pop;
+    conjunction::PopulationOptions pop;
     pop.count = static_cast<std::size_t>(src.population);
     pop.seed = static_cast<std::uint64_t>(src.seed);
     pop.span_s = in.span_s;
     pop.earth = in.earth;
-    req.objects = synthetic_population(pop);
+    req.objects = conjunction::synthetic_population(pop);
     req.objects_source = "synthetic population N=" + std::to_string(src.population) +
                          " seed=" + std::to_string(src.seed);
     (void)sc.list_size("objects");  // present but not a list is still an error
@@ -58,15 +58,15 @@ void load_objects(const config::Scenario& sc, const ScreenObjectsSource& src,
 // --method paper: the adaptive Step rule over every pair.
 void run_paper(const ScreenObjectsRequest& req, ScreenObjectsResult& r) {
   const ScreenScenario& in = req.scenario;
-  validate_objects(req.objects, in.earth);
+  conjunction::validate_objects(req.objects, in.earth);
   if (req.objects.size() > 2000) {
     throw std::invalid_argument("--method paper checks all N^2 pairs at every step: " +
                                 std::to_string(req.objects.size()) + " objects outside [2, 2000]");
   }
-  Ephemeris eph(req.objects, in.gravity, in.earth, in.robust.integ);
+  conjunction::Ephemeris eph(req.objects, in.gravity, in.earth, in.robust.integ);
   std::function<void(double)> progress;
   if (req.progress) progress = [&req](double f) { req.progress(percent("screen (paper)", f)); };
-  PaperResult p = screen_paper(req.objects, in.span_s, in.paper_step, eph, req.trace, progress);
+  conjunction::PaperResult p = conjunction::screen_paper(req.objects, in.span_s, in.paper_step, eph, req.trace, progress);
   if (req.progress) req.progress("\n");
   r.steps = p.steps;
   r.events = std::move(p.events);
@@ -77,10 +77,10 @@ void run_paper(const ScreenObjectsRequest& req, ScreenObjectsResult& r) {
 // --method robust: the screening that cannot miss, on req.threads (and req.ranks).
 void run_robust(const ScreenObjectsRequest& req, ScreenObjectsResult& r) {
   const ScreenScenario& in = req.scenario;
-  ScreenOptions so = in.robust;
+  conjunction::ScreenOptions so = in.robust;
   so.threads = req.threads > 0 ? req.threads
                                : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const double grid_step_s = so.step_s > 0.0 ? so.step_s : auto_step_s(req.objects.size());
+  const double grid_step_s = so.step_s > 0.0 ? so.step_s : conjunction::auto_step_s(req.objects.size());
   if (req.progress) {
     char buf[256];
     (void)std::snprintf(buf, sizeof buf, "screen: %zu objects, %.0f s, threshold %.1f m, step %.1f s, %d threads, %d ranks\n",
@@ -88,8 +88,8 @@ void run_robust(const ScreenObjectsRequest& req, ScreenObjectsResult& r) {
     req.progress(buf);
     so.progress = [&req](double f) { req.progress(percent("screen", f)); };
   }
-  ScreenResult s = req.robust_screener ? req.robust_screener(req.objects, in.span_s, so)
-                                       : screen_robust(req.objects, in.span_s, so);
+  conjunction::ScreenResult s = req.robust_screener ? req.robust_screener(req.objects, in.span_s, so)
+                                       : conjunction::screen_robust(req.objects, in.span_s, so);
   if (req.progress) req.progress("\n");
   r.steps = s.stats.steps;
   r.robust = true;
@@ -100,7 +100,7 @@ void run_robust(const ScreenObjectsRequest& req, ScreenObjectsResult& r) {
   r.events = std::move(s.events);
 }
 
-nlohmann::json trace_json(const std::vector<TraceRow>& trace, double epoch_s) {
+nlohmann::json trace_json(const std::vector<conjunction::TraceRow>& trace, double epoch_s) {
   nlohmann::json tr = nlohmann::json::array();
   for (const auto& row : trace) {
     tr.push_back({{"t_s", row.t_s},
@@ -117,7 +117,7 @@ nlohmann::json trace_json(const std::vector<TraceRow>& trace, double epoch_s) {
 }
 
 nlohmann::json stats_json(const ScreenObjectsResult& r) {
-  const ScreenStats& st = r.stats;
+  const conjunction::ScreenStats& st = r.stats;
   const std::size_t n = r.objects.size();
   return {{"grid_steps", st.steps},
           {"pairs_checked", st.pairs_checked},
@@ -214,4 +214,4 @@ nlohmann::json to_json(const ScreenObjectsResult& r) {
   return out;
 }
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

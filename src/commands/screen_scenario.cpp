@@ -1,12 +1,12 @@
 // Scenario reader of the conjunction screening (see screen_scenario.hpp).
-#include "evade/conjunction/screen_scenario.hpp"
+#include "evade/commands/screen_scenario.hpp"
 
 #include <stdexcept>
 
 #include "evade/config/read_params.hpp"
 #include "evade/core/epoch.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 namespace {
 
 const Param<ScreenScenario> kScreenScenarioRows[] = {
@@ -30,8 +30,8 @@ ScreenScenario read_screen_scenario(const config::Scenario& sc) {
   in.gravity = sc.get_enum("gravity", {"two_body", "two_body_j2"}, "two_body") == "two_body_j2"
                    ? GravityModel::kTwoBodyJ2
                    : GravityModel::kTwoBody;
-  config::read_params(sc, "paper_step.", paper_step_params(), &in.paper_step);
-  config::read_params(sc, "robust.", screen_options_params(), &in.robust);
+  config::read_params(sc, "paper_step.", conjunction::paper_step_params(), &in.paper_step);
+  config::read_params(sc, "robust.", conjunction::screen_options_params(), &in.robust);
   in.robust.warning_multiple = in.paper_step.n_warning;
   in.robust.gravity = in.gravity;
   in.robust.earth = in.earth;
@@ -44,4 +44,4 @@ ScreenScenario read_screen_scenario(const config::Scenario& sc) {
   return in;
 }
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <string>
 
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 #include "evade/core/epoch.hpp"
 #include "evade/core/text_format.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 namespace {
 
 // " Pc 1.234e-05" for event k when its CDM carries a Pc; "" without a covariance.
@@ -45,7 +45,7 @@ std::string to_text(const ScreenObjectsResult& r) {
                          r.events.size(), r.steps, r.wall_time_s);
   bool flagged = false;
   for (std::size_t k = 0; k < r.events.size(); ++k) {
-    const Conjunction& c = r.events[k];
+    const conjunction::Conjunction& c = r.events[k];
     s += format_text("  %-10s %-10s TCA %s  miss %12.3f m  v_rel %9.3f m/s%s%s%s\n",
                 r.objects[c.i].name.c_str(), r.objects[c.j].name.c_str(),
                 utc_text_ms(r.epoch_j2000_s + c.tca_s).c_str(), c.miss_m, c.rel_speed_mps,
@@ -87,4 +87,4 @@ std::string to_text(const ScreenCatalogResult& r) {
   return s + cdm_lines(r.cdm);
 }
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

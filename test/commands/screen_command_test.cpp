@@ -13,11 +13,13 @@
 #include "evade/config/scenario.hpp"
 #include "evade/conjunction/population.hpp"
 #include "evade/conjunction/reference_screen.hpp"
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 #include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 ScreenObjectsRequest seed2_request(const std::string& method) {
   const config::Scenario sc = config::Scenario::load("seed2");

@@ -20,7 +20,7 @@
 #include "evade/core/param.hpp"
 #include "evade/dynamics/gravity.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 
 struct ScreenScenario {
   std::string epoch_utc = "2000-01-01 12:00:00";  ///< as written (echoed in results)
@@ -28,10 +28,10 @@ struct ScreenScenario {
   double span_s = 0.0;          ///< screened span [s]; no default (required key)
   GravityModel gravity = GravityModel::kTwoBody;
   EarthModel earth = kEarthDefault;
-  PaperStepParams paper_step;   ///< validated
+  conjunction::PaperStepParams paper_step;   ///< validated
   /// robust.* read; gravity and earth as above, warning_multiple = paper_step.n_warning
   /// (the paper's N); threads and progress are left to the caller.
-  ScreenOptions robust;
+  conjunction::ScreenOptions robust;
 };
 
 /// The scenario's top-level number: span_s.
@@ -41,4 +41,4 @@ ParamTable<ScreenScenario> screen_scenario_params() noexcept;
 /// check_all_used()).
 ScreenScenario read_screen_scenario(const config::Scenario& sc);
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

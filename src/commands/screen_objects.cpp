@@ -1,6 +1,6 @@
 // Screening objects from YAML scenarios or CSV text, validated field by field (issue 6).
 // Keplerian elements, from either, have the one reader's limits (config/read_elements.hpp).
-#include "evade/conjunction/catalog.hpp"
+#include "evade/commands/screen_objects.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -12,10 +12,10 @@
 #include "evade/config/read_elements.hpp"
 #include "evade/core/elements.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 namespace {
 
-SpaceObject from_elements(double a, double e, double i_deg, double raan_deg, double argp_deg,
+conjunction::SpaceObject from_elements(double a, double e, double i_deg, double raan_deg, double argp_deg,
                           double m_deg, const EarthModel& earth) {
   OrbitalElements oe;
   oe.a_m = a;
@@ -24,7 +24,7 @@ SpaceObject from_elements(double a, double e, double i_deg, double raan_deg, dou
   oe.raan_rad = raan_deg * kDegToRad;
   oe.argp_rad = argp_deg * kDegToRad;
   oe.true_anomaly_rad = true_from_mean_anomaly(m_deg * kDegToRad, e);
-  SpaceObject o;
+  conjunction::SpaceObject o;
   o.state = state_from_elements(oe, earth.mu_m3ps2);
   return o;
 }
@@ -123,8 +123,8 @@ class CsvRow {
   std::size_t k_;
 };
 
-SpaceObject object_from_row(const CsvRow& row, const EarthModel& earth) {
-  SpaceObject o;
+conjunction::SpaceObject object_from_row(const CsvRow& row, const EarthModel& earth) {
+  conjunction::SpaceObject o;
   if (row.cartesian()) {
     o.state.r_eci_m = Vec3(row.num("x_m"), row.num("y_m"), row.num("z_m"));
     o.state.v_eci_mps = Vec3(row.num("vx_mps"), row.num("vy_mps"), row.num("vz_mps"));
@@ -150,20 +150,20 @@ SpaceObject object_from_row(const CsvRow& row, const EarthModel& earth) {
 
 }  // namespace
 
-std::vector<SpaceObject> objects_from_scenario(const config::Scenario& sc, const EarthModel& earth) {
+std::vector<conjunction::SpaceObject> objects_from_scenario(const config::Scenario& sc, const EarthModel& earth) {
   const std::size_t n = sc.list_size("objects");
   if (n == 0) throw config::ConfigError("objects: missing or empty (need a list of objects)");
-  std::vector<SpaceObject> out;
+  std::vector<conjunction::SpaceObject> out;
   out.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::string p = "objects." + std::to_string(k) + ".";
-    SpaceObject o;
+    conjunction::SpaceObject o;
     if (sc.has(p + "r_eci_m") || sc.has(p + "v_eci_mps")) {
       o.state.r_eci_m = sc.get_vec3(p + "r_eci_m", -1e9, 1e9);
       o.state.v_eci_mps = sc.get_vec3(p + "v_eci_mps", -1e6, 1e6);
-      OrbitShape s;
+      conjunction::OrbitShape s;
       try {
-        s = orbit_shape(o.state, earth.mu_m3ps2);
+        s = conjunction::orbit_shape(o.state, earth.mu_m3ps2);
       } catch (const std::invalid_argument& err) {
         throw config::ConfigError(p + "v_eci_mps: " + err.what());
       }
@@ -183,15 +183,15 @@ std::vector<SpaceObject> objects_from_scenario(const config::Scenario& sc, const
     o.pos_error_m = sc.get_double(p + "pos_error_m", 0.0, 1e7);
     out.push_back(o);
   }
-  validate_objects(out, earth);
+  conjunction::validate_objects(out, earth);
   return out;
 }
 
-std::vector<SpaceObject> objects_from_csv(const std::string& text, const EarthModel& earth) {
+std::vector<conjunction::SpaceObject> objects_from_csv(const std::string& text, const EarthModel& earth) {
   std::istringstream is(text);
   std::string line;
   CsvColumns cols;
-  std::vector<SpaceObject> out;
+  std::vector<conjunction::SpaceObject> out;
   long line_no = 0;
   while (std::getline(is, line)) {
     ++line_no;
@@ -204,11 +204,11 @@ std::vector<SpaceObject> objects_from_csv(const std::string& text, const EarthMo
       out.push_back(object_from_row(CsvRow(cols, cells, line_no, out.size()), earth));
     }
   }
-  validate_objects(out, earth);
+  conjunction::validate_objects(out, earth);
   return out;
 }
 
-std::string events_to_csv(const std::vector<Conjunction>& events, const std::vector<SpaceObject>& objects) {
+std::string events_to_csv(const std::vector<conjunction::Conjunction>& events, const std::vector<conjunction::SpaceObject>& objects) {
   std::ostringstream os;
   os.precision(17);
   os << "i,j,name_i,name_j,tca_s,miss_m,rel_speed_mps,collision,warning\n";
@@ -221,4 +221,4 @@ std::string events_to_csv(const std::vector<Conjunction>& events, const std::vec
   return os.str();
 }
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

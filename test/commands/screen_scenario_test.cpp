@@ -6,12 +6,14 @@
 #include <string>
 
 #include "evade/config/scenario.hpp"
-#include "evade/conjunction/catalog.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
+#include "evade/commands/screen_objects.hpp"
+#include "evade/commands/screen_scenario.hpp"
 #include "evade/core/epoch.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 std::string error_of(const config::Scenario& sc) {
   try {

@@ -27,11 +27,11 @@
 #include "evade/conjunction/primary_window_screen.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
+#include "evade/commands/screen_scenario.hpp"
 #include "evade/conjunction/types.hpp"
 #include "evade/sgp4/catalog.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 
 /// Text sink for progress and diagnostics (e.g. stderr); empty: silent.
 using ScreenTextSink = std::function<void(const std::string&)>;
@@ -39,7 +39,7 @@ using ScreenTextSink = std::function<void(const std::string&)>;
 /// The robust screening of the objects mode (default screen_robust; the CLI passes the
 /// MPI-distributed one).
 using RobustScreener =
-    std::function<ScreenResult(const std::vector<SpaceObject>&, double, const ScreenOptions&)>;
+    std::function<conjunction::ScreenResult(const std::vector<conjunction::SpaceObject>&, double, const conjunction::ScreenOptions&)>;
 
 // ---------------------------------------------------------------- objects mode
 
@@ -57,7 +57,7 @@ struct ScreenObjectsRequest {
   bool trace = false;             ///< paper: record every sample (Table 2 rows)
   int threads = 0;                ///< robust: worker threads; 0: hardware concurrency
   ScreenScenario scenario;        ///< epoch, span, force model, paper_step.*, robust.*
-  std::vector<SpaceObject> objects;
+  std::vector<conjunction::SpaceObject> objects;
   std::string objects_source;     ///< echoed as objects_source
   nlohmann::json scenario_used = nlohmann::json::object();  ///< every scenario value read
   assessment::ScreenCdmOptions cdm;  ///< dir empty: no CDMs (robust only)
@@ -80,21 +80,21 @@ ScreenObjectsRequest read_screen_objects_request(const config::Scenario& sc,
 struct ScreenObjectsResult {
   std::string method;
   std::string objects_source;
-  std::vector<SpaceObject> objects;  ///< screened (names for the events)
+  std::vector<conjunction::SpaceObject> objects;  ///< screened (names for the events)
   std::string epoch_utc;             ///< t = 0, as the scenario writes it
   double epoch_j2000_s = 0.0;        ///< t = 0, UTC s since J2000
   double span_s = 0.0;
   nlohmann::json scenario_used = nlohmann::json::object();
   double warning_multiple = 0.0;     ///< N: WARNING when miss <= N R_c
-  std::vector<Conjunction> events;   ///< by TCA; paper: flagged samples
+  std::vector<conjunction::Conjunction> events;   ///< by TCA; paper: flagged samples
   long steps = 0;                    ///< paper: samples after t = 0; robust: grid steps
   bool robust = false;               ///< the stats below are set
-  ScreenStats stats;
+  conjunction::ScreenStats stats;
   int threads = 0;
   int ranks = 1;
   double grid_step_s = 0.0;          ///< robust grid step (auto_step_s(N) when 0 was asked)
   bool traced = false;               ///< the trace below was recorded
-  std::vector<TraceRow> trace;
+  std::vector<conjunction::TraceRow> trace;
   double wall_time_s = 0.0;          ///< the screening's wall-clock time [s]
   std::optional<assessment::ScreenCdms> cdm;  ///< one CDM per event, when asked for
 };
@@ -170,9 +170,9 @@ struct ScreenCatalogResult {
   long bad_entries = 0;
   std::vector<std::string> rejections;  ///< "NORAD id (NAME): reason"
   std::optional<long> primary_norad;
-  std::optional<PrimaryPrefilterCounts> prefilter;  ///< with a primary and the prefilter
-  std::optional<TimeFilterCounts> time_filter;      ///< with the time filter
-  ScreenStats stats;
+  std::optional<conjunction::PrimaryPrefilterCounts> prefilter;  ///< with a primary and the prefilter
+  std::optional<conjunction::TimeFilterCounts> time_filter;      ///< with the time filter
+  conjunction::ScreenStats stats;
   int threads = 0;
   int ranks = 1;
   double grid_step_s = 0.0;
@@ -193,4 +193,4 @@ std::string to_text(const ScreenCatalogResult& r);
 /// "YYYY-MM-DD hh:mm:ss.fff UTC": an instant (UTC s since J2000) rounded to the millisecond.
 std::string utc_text_ms(double utc_j2000_s);
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

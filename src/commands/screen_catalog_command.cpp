@@ -10,16 +10,16 @@
 #include <thread>
 #include <utility>
 
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
-#include "evade/conjunction/screening_events.hpp"
+#include "evade/commands/screen_scenario.hpp"
+#include "evade/commands/screening_events.hpp"
 #include "evade/conjunction/sgp4_motion.hpp"
 #include "evade/core/epoch.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 namespace {
 
 constexpr double kMaxSpanS = 31.0 * 86400.0;  // SGP4 element sets are stale after weeks
@@ -27,7 +27,7 @@ constexpr double kMaxSpanS = 31.0 * 86400.0;  // SGP4 element sets are stale aft
 std::string utc(double j2000_s) { return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s)); }
 
 // Index of the primary in the screened objects; names the reason when it is not there.
-long primary_index(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
+long primary_index(const ScreenCatalogRequest& req, const conjunction::Sgp4Screening& s) {
   return req.primary_norad < 0 ? -1 : static_cast<long>(conjunction::primary_index(s, req.primary_norad));
 }
 
@@ -38,9 +38,9 @@ double screen_start_j2000_s(const ScreenCatalogRequest& req) {
   return sgp4::latest_epoch_seconds_since_j2000(req.catalog.objects);
 }
 
-Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
-                             std::optional<PrimaryPrefilterCounts>* counts) {
-  Sgp4MotionOptions mo;
+conjunction::Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
+                             std::optional<conjunction::PrimaryPrefilterCounts>* counts) {
+  conjunction::Sgp4MotionOptions mo;
   mo.span_s = req.span_s;
   mo.threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   mo.start_at_latest_epoch = false;
@@ -54,10 +54,10 @@ Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
   const bool filter = req.prefilter && req.primary_norad >= 0;
   if (filter) {
     counts->emplace();
-    kept = prefilter_primary(req.catalog.objects, req.primary_norad, mo.start_j2000_s,
+    kept = conjunction::prefilter_primary(req.catalog.objects, req.primary_norad, mo.start_j2000_s,
                              req.span_s, req.threshold_m, &**counts, mo.threads, req.path_filter);
   }
-  Sgp4Screening s = sgp4_screening(filter ? kept : req.catalog.objects, mo);
+  conjunction::Sgp4Screening s = conjunction::sgp4_screening(filter ? kept : req.catalog.objects, mo);
   if (req.diagnostic)
     for (const auto& r : s.rejected) req.diagnostic("evade screen: rejected: " + r.message() + "\n");
   if (s.objects.size() < (filter ? 1u : 2u))  // the primary alone: nothing comes within D
@@ -67,10 +67,10 @@ Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
 }
 
 // The screen's options but for the motion and the primary (catalog_options adds them).
-ScreenOptions base_options(const ScreenCatalogRequest& req) {
-  ScreenOptions so;
+conjunction::ScreenOptions base_options(const ScreenCatalogRequest& req) {
+  conjunction::ScreenOptions so;
   so.gravity = GravityModel::kTwoBodyJ2;
-  so.earth = wgs72_earth();
+  so.earth = conjunction::wgs72_earth();
   so.threshold_m = req.threshold_m;
   so.include_warning_radius = false;  // catalogs carry no sizes: the threshold alone
   so.step_s = req.step_s;
@@ -85,14 +85,14 @@ ScreenOptions base_options(const ScreenCatalogRequest& req) {
   return so;
 }
 
-ScreenOptions catalog_options(const ScreenCatalogRequest& req, const Sgp4Screening& s) {
-  ScreenOptions so = base_options(req);
+conjunction::ScreenOptions catalog_options(const ScreenCatalogRequest& req, const conjunction::Sgp4Screening& s) {
+  conjunction::ScreenOptions so = base_options(req);
   so.motion = s.motion;
   so.primary = primary_index(req, s);
   return so;
 }
 
-std::vector<CatalogEvent> catalog_events(const ScreenResult& r, const Sgp4Screening& s) {
+std::vector<CatalogEvent> catalog_events(const conjunction::ScreenResult& r, const conjunction::Sgp4Screening& s) {
   std::vector<CatalogEvent> out;
   out.reserve(r.events.size());
   for (const auto& c : r.events) {
@@ -103,8 +103,8 @@ std::vector<CatalogEvent> catalog_events(const ScreenResult& r, const Sgp4Screen
 }
 
 // Everything but the events, the statistics and the CDMs.
-ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const Sgp4Screening& s,
-                                   const ScreenOptions& so) {
+ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const conjunction::Sgp4Screening& s,
+                                   const conjunction::ScreenOptions& so) {
   ScreenCatalogResult res;
   res.frame = s.motion->frame();
   res.source = req.source;
@@ -118,7 +118,7 @@ ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const Sgp4Sc
   if (so.primary >= 0) res.primary_norad = req.primary_norad;
   res.threads = so.threads;
   res.ranks = req.ranks;
-  res.grid_step_s = so.step_s > 0.0 ? so.step_s : auto_step_s(s.objects.size(), so);
+  res.grid_step_s = so.step_s > 0.0 ? so.step_s : conjunction::auto_step_s(s.objects.size(), so);
   res.envelopes_sampled = s.envelopes_sampled;
   return res;
 }
@@ -151,7 +151,7 @@ void apply_param_overrides(const std::vector<std::string>& key_values, ScreenCat
       req->span_s);
   for (const auto& [key, field] : {std::pair<const char*, double*>{"robust.threshold_m", &req->threshold_m},
                                    std::pair<const char*, double*>{"robust.step_s", &req->step_s}}) {
-    *field = sc.get_param(key, spec(config::find_param_spec(screen_options_params(), "robust.", key), key),
+    *field = sc.get_param(key, spec(config::find_param_spec(conjunction::screen_options_params(), "robust.", key), key),
                           *field);
   }
   sc.check_all_used();
@@ -164,8 +164,8 @@ using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
 // The result of a screen of s (events r, options so): header, events and CDMs.
-ScreenCatalogResult catalog_result(const ScreenCatalogRequest& req, const Sgp4Screening& s,
-                                   const ScreenOptions& so, const ScreenResult& r) {
+ScreenCatalogResult catalog_result(const ScreenCatalogRequest& req, const conjunction::Sgp4Screening& s,
+                                   const conjunction::ScreenOptions& so, const conjunction::ScreenResult& r) {
   ScreenCatalogResult res = catalog_header(req, s, so);
   res.stats = r.stats;
   res.events = catalog_events(r, s);
@@ -181,20 +181,20 @@ ScreenCatalogResult catalog_result(const ScreenCatalogRequest& req, const Sgp4Sc
 // time filter's windows only (primary_window_screen.hpp).
 ScreenCatalogResult run_windowed(const ScreenCatalogRequest& req) {
   const auto t0 = Clock::now();
-  PrimaryPrefilterCounts counts;
+  conjunction::PrimaryPrefilterCounts counts;
   const double start_s = screen_start_j2000_s(req);
-  const ScreenOptions base = base_options(req);
-  const std::vector<sgp4::MeanElements> kept = prefilter_primary(
+  const conjunction::ScreenOptions base = base_options(req);
+  const std::vector<sgp4::MeanElements> kept = conjunction::prefilter_primary(
       req.catalog.objects, req.primary_norad, start_s, req.span_s, req.threshold_m, &counts, base.threads,
       req.path_filter);
   const auto t1 = Clock::now();
-  const PrimaryWindowScreen w = screen_primary_windows(kept, req.primary_norad, start_s, req.span_s,
-                                                       base, TimeFilterOptions{req.threshold_m});
+  const conjunction::PrimaryWindowScreen w = conjunction::screen_primary_windows(kept, req.primary_norad, start_s, req.span_s,
+                                                       base, conjunction::TimeFilterOptions{req.threshold_m});
   const auto t2 = Clock::now();
   if (req.progress) req.progress("\n");
   if (req.diagnostic)
     for (const auto& r : w.screening.rejected) req.diagnostic("evade screen: rejected: " + r.message() + "\n");
-  ScreenOptions so = catalog_options(req, w.screening);
+  conjunction::ScreenOptions so = catalog_options(req, w.screening);
   so.step_s = w.step_s;  // the grid step the windows used
   ScreenCatalogResult res = catalog_result(req, w.screening, so, w.result);
   res.prefilter = counts;
@@ -210,12 +210,12 @@ ScreenCatalogResult run_screen_catalog(const ScreenCatalogRequest& req) {
   req.validate();
   if (req.primary_norad >= 0 && req.prefilter && req.time_filter && !req.robust_screener) return run_windowed(req);
   const auto t0 = Clock::now();
-  std::optional<PrimaryPrefilterCounts> prefilter;
-  const Sgp4Screening s = catalog_motion(req, &prefilter);
+  std::optional<conjunction::PrimaryPrefilterCounts> prefilter;
+  const conjunction::Sgp4Screening s = catalog_motion(req, &prefilter);
   const auto t1 = Clock::now();
-  const ScreenOptions so = catalog_options(req, s);
-  const ScreenResult r = req.robust_screener ? req.robust_screener(s.objects, req.span_s, so)
-                                              : screen_robust(s.objects, req.span_s, so);
+  const conjunction::ScreenOptions so = catalog_options(req, s);
+  const conjunction::ScreenResult r = req.robust_screener ? req.robust_screener(s.objects, req.span_s, so)
+                                              : conjunction::screen_robust(s.objects, req.span_s, so);
   const auto t2 = Clock::now();
   if (req.progress) req.progress("\n");
   ScreenCatalogResult res = catalog_result(req, s, so, r);
@@ -280,4 +280,4 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
   return j;
 }
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands

@@ -1,5 +1,5 @@
 // Screening events as CDM inputs (see screening_events.hpp): states at the TCA in EME2000.
-#include "evade/conjunction/screening_events.hpp"
+#include "evade/commands/screening_events.hpp"
 
 #include <cctype>
 #include <map>
@@ -7,7 +7,7 @@
 #include "evade/conjunction/event_states.hpp"
 #include "evade/sgp4/teme_to_j2000.hpp"
 
-namespace evade::conjunction {
+namespace evade::commands {
 
 using assessment::EventObject;
 using assessment::ScreeningEvent;
@@ -21,9 +21,9 @@ std::string ccsds_international_designator(const std::string& id) {
   return id;
 }
 
-std::vector<ScreeningEvent> object_screening_events(const std::vector<Conjunction>& events,
-                                                    const std::vector<SpaceObject>& objects,
-                                                    const ScreenOptions& so,
+std::vector<ScreeningEvent> object_screening_events(const std::vector<conjunction::Conjunction>& events,
+                                                    const std::vector<conjunction::SpaceObject>& objects,
+                                                    const conjunction::ScreenOptions& so,
                                                     double epoch_utc_j2000_s) {
   const std::string how = so.gravity == GravityModel::kTwoBody
                               ? "state at TCA by two-body motion (Kepler) from the screening epoch; EME2000 = evade's ECI"
@@ -31,7 +31,7 @@ std::vector<ScreeningEvent> object_screening_events(const std::vector<Conjunctio
   std::vector<ScreeningEvent> out;
   out.reserve(events.size());
   for (const auto& c : events) {
-    const auto st = event_states(objects, c, so);
+    const auto st = conjunction::event_states(objects, c, so);
     ScreeningEvent ev;
     const std::size_t idx[2] = {c.i, c.j};
     for (int k = 0; k < 2; ++k) {
@@ -50,16 +50,16 @@ std::vector<ScreeningEvent> object_screening_events(const std::vector<Conjunctio
   return out;
 }
 
-std::vector<ScreeningEvent> catalog_screening_events(const std::vector<Conjunction>& events,
-                                                     const Sgp4Screening& s,
+std::vector<ScreeningEvent> catalog_screening_events(const std::vector<conjunction::Conjunction>& events,
+                                                     const conjunction::Sgp4Screening& s,
                                                      const std::vector<sgp4::MeanElements>& elements,
-                                                     const ScreenOptions& so) {
+                                                     const conjunction::ScreenOptions& so) {
   std::map<long, const sgp4::MeanElements*> by_id;
   for (const auto& m : elements) by_id.emplace(m.norad_id, &m);
   std::vector<ScreeningEvent> out;
   out.reserve(events.size());
   for (const auto& c : events) {
-    const auto st = event_states(s.objects, c, so);
+    const auto st = conjunction::event_states(s.objects, c, so);
     ScreeningEvent ev;
     const std::size_t idx[2] = {c.i, c.j};
     for (int k = 0; k < 2; ++k) {
@@ -82,4 +82,4 @@ std::vector<ScreeningEvent> catalog_screening_events(const std::vector<Conjuncti
   return out;
 }
 
-}  // namespace evade::conjunction
+}  // namespace evade::commands
