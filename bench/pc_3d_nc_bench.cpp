@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
 #include "evade/assessment/sphere_quadrature.hpp"

@@ -37,10 +37,6 @@ PHYSICS = ("dynamics", "sgp4", "conjunction", "threat", "formation", "observabil
 FORBIDDEN_FOR_PHYSICS = "config"
 # Third-party libraries a physics module must not link: a link item naming one of these.
 FORBIDDEN_THIRDPARTY = ("yaml-cpp", "nlohmann_json")
-# Issue 41 frees the physics modules one commit at a time: the modules still linking
-# evade::config (each must: an entry whose module no longer links it is reported as stale,
-# so the list only shrinks). Empty when every physics module is free.
-NOT_YET_FREED = {"assessment"}
 
 
 def read_graph(path, thirdparty=None):
@@ -171,7 +167,7 @@ def forbidden_lib(lib):
 
 def physics_errors(modules, thirdparty):
     """Every physics module that reaches evade::config, yaml-cpp or nlohmann-json, with the
-    link path; every stale NOT_YET_FREED entry; every PHYSICS name that is not a module."""
+    link path; every PHYSICS name that is not a module."""
     errors = []
     for m in PHYSICS:
         if m not in modules:
@@ -179,11 +175,6 @@ def physics_errors(modules, thirdparty):
                           "check_architecture_deps.py PHYSICS names it)")
             continue
         path = node_path_to(modules, {m}, FORBIDDEN_FOR_PHYSICS)
-        if m in NOT_YET_FREED:
-            if path is None:
-                errors.append(f"physics module '{m}' no longer links evade_config: take it "
-                              "out of NOT_YET_FREED (scripts/check_architecture_deps.py)")
-            continue
         if path:
             errors.append(f"physics module '{m}' links evade_{FORBIDDEN_FOR_PHYSICS} (path: "
                           + " -> ".join(path) + "); its scenario reader and JSON belong in "
@@ -335,18 +326,14 @@ def self_test(doc_text):
 
 
 def physics_summary():
-    free = [m for m in PHYSICS if m not in NOT_YET_FREED]
-    text = (f"{len(free)} physics modules ({', '.join(free)}) reach no evade_"
+    return (f"{len(PHYSICS)} physics modules ({', '.join(PHYSICS)}) reach no evade_"
             f"{FORBIDDEN_FOR_PHYSICS}, {' or '.join(FORBIDDEN_THIRDPARTY)}")
-    if NOT_YET_FREED:
-        text += f" ({len(NOT_YET_FREED)} not yet freed: {', '.join(sorted(NOT_YET_FREED))})"
-    return text
 
 
 def physics_cases(base_mods, base_exes, doc_text, copy):
     """Self-test cases of the physics rule: each alteration must be reported."""
     cases = []
-    free = [m for m in PHYSICS if m in base_mods and m not in NOT_YET_FREED]
+    free = [m for m in PHYSICS if m in base_mods]
     if not free:
         return cases
     p = free[0]
@@ -369,13 +356,6 @@ def physics_cases(base_mods, base_exes, doc_text, copy):
         cases.append((f"physics '{p}' reaches yaml-cpp through '{below[0]}'", mods, exes, doc_text,
                       {below[0]: {"yaml-cpp"}},
                       f"physics module '{p}' links yaml-cpp (path: {p} -> {below[0]}"))
-    pending = sorted(m for m in NOT_YET_FREED if m in base_mods)
-    if pending:
-        mods, exes = copy()
-        for deps in mods.values():
-            deps.discard(FORBIDDEN_FOR_PHYSICS)
-        cases.append((f"'{pending[0]}' freed but still listed as not yet freed", mods, exes,
-                      doc_text, {}, f"physics module '{pending[0]}' no longer links evade_config"))
     return cases
 
 

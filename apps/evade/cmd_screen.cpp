@@ -102,7 +102,7 @@ int run_catalog(const Options& o) {
   c.threads = o.threads;
   c.json = o.common.json;
   c.quiet = o.quiet;
-  assessment::check_screen_cdm_options(screen_cdm_options(c.cdm), false);
+  commands::check_screen_cdm_options(screen_cdm_options(c.cdm), false);
   create_cdm_dir(c.cdm.dir);
   return run_catalog_screen(c);
 }

@@ -25,19 +25,20 @@
 #include <nanobind/stl/vector.h>
 
 #include "bind_common.hpp"
-#include "evade/assessment/assess_command.hpp"
+#include "evade/commands/assess_command.hpp"
 #include "evade/assessment/cam_burn_plan.hpp"
 #include "evade/assessment/cdm.hpp"
 #include "evade/assessment/cdm_kvn.hpp"
 #include "evade/assessment/cdm_xml.hpp"
-#include "evade/assessment/conjunction_input.hpp"
-#include "evade/assessment/plan_cam_command.hpp"
+#include "evade/commands/conjunction_input.hpp"
+#include "evade/commands/plan_cam_command.hpp"
 #include "evade/core/epoch.hpp"
 
 namespace evade::python {
 namespace {
 
 using namespace evade::assessment;
+using namespace evade::commands;
 
 /// A CDM argument as the Python layer hands it: a file's path (read here, as the CLI's
 /// --cdm), or a text with the name the result gives it.

@@ -135,7 +135,7 @@ void ScreenCatalogRequest::validate() const {
   if (!(step_s == 0.0 || (step_s >= 1.0 && step_s <= 600.0)))
     throw std::invalid_argument("--step-s = " + std::to_string(step_s) +
                                 " is invalid: expected 0 (automatic) or a number in [1, 600] s");
-  assessment::check_screen_cdm_options(cdm, false);  // catalog objects carry no radii
+  commands::check_screen_cdm_options(cdm, false);  // catalog objects carry no radii
 }
 
 void apply_param_overrides(const std::vector<std::string>& key_values, ScreenCatalogRequest* req) {
@@ -170,8 +170,8 @@ ScreenCatalogResult catalog_result(const ScreenCatalogRequest& req, const conjun
   res.stats = r.stats;
   res.events = catalog_events(r, s);
   if (!req.cdm.dir.empty() && req.rank == 0) {  // the other ranks hold only their part
-    const assessment::ScreenCdmRun run{s.start_j2000_s, req.span_s, req.threshold_m, "catalog " + req.source};
-    res.cdm = assessment::screen_event_cdms(req.cdm, run,
+    const commands::ScreenCdmRun run{s.start_j2000_s, req.span_s, req.threshold_m, "catalog " + req.source};
+    res.cdm = commands::screen_event_cdms(req.cdm, run,
                                             catalog_screening_events(r.events, s, req.catalog.objects, so));
   }
   return res;
@@ -276,7 +276,7 @@ nlohmann::json to_json(const ScreenCatalogResult& r) {
                   {"miss_m", e.miss_m}, {"rel_speed_mps", e.rel_speed_mps}});
   }
   j["events"] = std::move(ev);
-  if (r.cdm) j["cdm"] = assessment::to_json(*r.cdm);
+  if (r.cdm) j["cdm"] = commands::to_json(*r.cdm);
   return j;
 }
 

@@ -155,7 +155,7 @@ nlohmann::json events_json(const ScreenObjectsResult& r) {
 void ScreenObjectsRequest::validate() const {
   if (!cdm.dir.empty() && method != "robust")
     throw std::invalid_argument("--cdm-out: only with --method robust (the paper method flags samples, not TCAs)");
-  assessment::check_screen_cdm_options(cdm, true);
+  commands::check_screen_cdm_options(cdm, true);
   if (method != "paper" && trace) throw std::invalid_argument("--trace: only with --method paper");
 }
 
@@ -188,9 +188,9 @@ ScreenObjectsResult run_screen_objects(const ScreenObjectsRequest& req) {
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!req.cdm.dir.empty() && req.rank == 0) {
     const ScreenScenario& in = req.scenario;
-    const assessment::ScreenCdmRun run{in.epoch_j2000_s, in.span_s, in.robust.threshold_m,
+    const commands::ScreenCdmRun run{in.epoch_j2000_s, in.span_s, in.robust.threshold_m,
                                        "objects " + req.objects_source};
-    r.cdm = assessment::screen_event_cdms(
+    r.cdm = commands::screen_event_cdms(
         req.cdm, run, object_screening_events(r.events, req.objects, in.robust, in.epoch_j2000_s));
   }
   return r;
@@ -210,7 +210,7 @@ nlohmann::json to_json(const ScreenObjectsResult& r) {
   if (r.traced) out["trace"] = trace_json(r.trace, r.epoch_j2000_s);
   out["wall_time_s"] = r.wall_time_s;
   out["events"] = events_json(r);
-  if (r.cdm) out["cdm"] = assessment::to_json(*r.cdm);
+  if (r.cdm) out["cdm"] = commands::to_json(*r.cdm);
   return out;
 }
 

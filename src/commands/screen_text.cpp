@@ -13,13 +13,13 @@ namespace evade::commands {
 namespace {
 
 // " Pc 1.234e-05" for event k when its CDM carries a Pc; "" without a covariance.
-std::string pc_column(const std::optional<assessment::ScreenCdms>& cdm, std::size_t k) {
+std::string pc_column(const std::optional<commands::ScreenCdms>& cdm, std::size_t k) {
   if (!cdm || !cdm->covariance_known || k >= cdm->files.size()) return "";
   const std::optional<double>& pc = cdm->files[k].pc;
   return pc ? format_text("  Pc %9.3e", *pc) : std::string("  Pc       n/a");
 }
 
-std::string cdm_lines(const std::optional<assessment::ScreenCdms>& cdm) {
+std::string cdm_lines(const std::optional<commands::ScreenCdms>& cdm) {
   if (!cdm) return "";
   std::string s = format_text("CDMs: %zu (%s) in %s; covariance %s", cdm->files.size(),
                          cdm->format.c_str(), cdm->dir.c_str(), cdm->covariance.c_str());

@@ -13,12 +13,14 @@
 #include "evade/assessment/cdm_from_event.hpp"
 #include "evade/assessment/cdm_kvn.hpp"
 #include "evade/assessment/cdm_xml.hpp"
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/core/epoch.hpp"
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::commands;
 
 // Two LEO objects at their TCA: object 2 crosses object 1's orbit at 60 degrees, 120 m away
 // along the direction normal to both velocities (so r.v = 0: the states are at TCA).

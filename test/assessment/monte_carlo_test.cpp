@@ -5,7 +5,7 @@
 
 #include "evade/assessment/assess.hpp"
 #include "evade/assessment/covariance.hpp"
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
 
@@ -16,6 +16,8 @@
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::commands;
 
 Mat6 lower_rtn(const double* l) {  // CDM order: CR_R, CT_R, CT_T, CN_R, ... CNDOT_NDOT
   Mat6 c;

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/equinoctial.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
@@ -20,6 +20,8 @@
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::commands;
 
 constexpr double kMu = 3.986004418e14;  // CARA's GM [m^3/s^2]
 

@@ -139,11 +139,11 @@ TEST(ScreenCommand, PopulationCdmsCarryAPcPerEvent) {
 }
 
 TEST(ScreenCommand, AssumedCovarianceIsDiagonalAndChecked) {
-  assessment::ScreenCdmOptions o;
-  EXPECT_FALSE(assessment::assumed_rtn_covariance(o).has_value());
+  commands::ScreenCdmOptions o;
+  EXPECT_FALSE(commands::assumed_rtn_covariance(o).has_value());
   o.cov_rtn_sigma_text = "100,300,50";
   o.cov_rtn_sigma_m = {100.0, 300.0, 50.0};
-  const auto c = assessment::assumed_rtn_covariance(o);
+  const auto c = commands::assumed_rtn_covariance(o);
   ASSERT_TRUE(c.has_value());
   EXPECT_EQ((*c)(0, 0), 1e4);
   EXPECT_EQ((*c)(1, 1), 9e4);
@@ -151,7 +151,7 @@ TEST(ScreenCommand, AssumedCovarianceIsDiagonalAndChecked) {
   EXPECT_EQ((*c)(3, 3), 0.0);
   EXPECT_EQ((*c)(0, 1), 0.0);
   o.cov_rtn_sigma_m = {100.0, -1.0, 50.0};
-  EXPECT_THROW((void)assessment::assumed_rtn_covariance(o), std::invalid_argument);
+  EXPECT_THROW((void)commands::assumed_rtn_covariance(o), std::invalid_argument);
 }
 
 TEST(ScreenCommand, CatalogNamesTheDecayingElementSet) {

@@ -21,7 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evade/assessment/screen_cdms.hpp"
+#include "evade/commands/screen_cdms.hpp"
 #include "evade/config/scenario.hpp"
 #include "evade/conjunction/primary_prefilter.hpp"
 #include "evade/conjunction/primary_window_screen.hpp"
@@ -60,13 +60,13 @@ struct ScreenObjectsRequest {
   std::vector<conjunction::SpaceObject> objects;
   std::string objects_source;     ///< echoed as objects_source
   nlohmann::json scenario_used = nlohmann::json::object();  ///< every scenario value read
-  assessment::ScreenCdmOptions cdm;  ///< dir empty: no CDMs (robust only)
+  commands::ScreenCdmOptions cdm;  ///< dir empty: no CDMs (robust only)
   int ranks = 1;                  ///< MPI ranks of robust_screener (echoed in stats)
   int rank = 0;                   ///< this process's rank: only rank 0 builds the CDMs
   RobustScreener robust_screener; ///< empty: screen_robust in this process
   ScreenTextSink progress;        ///< progress text; empty: none
   /// Before any output is prepared: --cdm-out only with robust, the CDM options
-  /// (assessment::check_screen_cdm_options), --trace only with paper. Throws
+  /// (commands::check_screen_cdm_options), --trace only with paper. Throws
   /// std::invalid_argument naming the flag.
   void validate() const;
 };
@@ -96,7 +96,7 @@ struct ScreenObjectsResult {
   bool traced = false;               ///< the trace below was recorded
   std::vector<conjunction::TraceRow> trace;
   double wall_time_s = 0.0;          ///< the screening's wall-clock time [s]
-  std::optional<assessment::ScreenCdms> cdm;  ///< one CDM per event, when asked for
+  std::optional<commands::ScreenCdms> cdm;  ///< one CDM per event, when asked for
 };
 
 /// Screens (after validate()). Throws std::invalid_argument for the paper method on more
@@ -134,11 +134,11 @@ struct ScreenCatalogRequest {
   /// rank (MPI_Allreduce, MPI_SUM); the setup's perturbation envelopes are then split
   /// between the ranks (Sgp4MotionOptions::sum_over_parts). Empty: each rank samples all.
   std::function<void(std::vector<double>&)> sum_over_ranks;
-  assessment::ScreenCdmOptions cdm;
+  commands::ScreenCdmOptions cdm;
   ScreenTextSink progress;        ///< progress text; empty: none
   ScreenTextSink diagnostic;      ///< one line per rejected element set; empty: none
   /// Throws std::invalid_argument naming --span-s, --threshold-m, --step-s or a CDM flag
-  /// (assessment::check_screen_cdm_options; catalog objects have no radii).
+  /// (commands::check_screen_cdm_options; catalog objects have no radii).
   void validate() const;
 };
 
@@ -180,7 +180,7 @@ struct ScreenCatalogResult {
   double motion_setup_wall_s = 0.0;
   double screen_wall_s = 0.0;
   std::vector<CatalogEvent> events;
-  std::optional<assessment::ScreenCdms> cdm;
+  std::optional<commands::ScreenCdms> cdm;
 };
 
 /// Builds the SGP4 motion and screens it. Throws std::invalid_argument for bad options, an

@@ -1,27 +1,27 @@
-// `evade plan cam` as a library call (include/evade/assessment/plan_cam_command.hpp): the
+// `evade plan cam` as a library call (include/evade/commands/plan_cam_command.hpp): the
 // request read from a scenario or a CDM, the plan or the lead-time trade space
 // (cam_planner.hpp; NLopt SLSQP, Kraft 1988), and the result's JSON and text forms.
-#include "evade/assessment/plan_cam_command.hpp"
+#include "evade/commands/plan_cam_command.hpp"
 
 #include <cstdio>
 #include <stdexcept>
 
 #include "evade/assessment/cam_burn_plan.hpp"
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/config/json_values.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/core/epoch.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 namespace {
 
 void read_tables(const config::Scenario& sc, PlanCamRequest* r) {
-  config::read_params(sc, "assessment.", assess_params(), &r->assess_config);
-  config::read_params(sc, "cam.", cam_params(), &r->cam_config);
+  config::read_params(sc, "assessment.", assessment::assess_params(), &r->assess_config);
+  config::read_params(sc, "cam.", assessment::cam_params(), &r->cam_config);
 }
 
 // The sweep's lead times; both ends checked as a single plan's lead would be.
-std::vector<double> sweep_leads(const CamLeadSweep& s, const CamRequest& req, const CamConfig& cfg) {
+std::vector<double> sweep_leads(const CamLeadSweep& s, const assessment::CamRequest& req, const assessment::CamConfig& cfg) {
   if (!(s.count >= 1 && s.count <= 10000) || !(s.first_lead_s <= s.last_lead_s))
     throw std::invalid_argument("lead sweep: expected first <= last and count in [1, 10000], found " +
                                 std::to_string(s.first_lead_s) + ", " +
@@ -29,9 +29,9 @@ std::vector<double> sweep_leads(const CamLeadSweep& s, const CamRequest& req, co
   const double a = s.first_lead_s, b = s.last_lead_s;
   const int n = s.count;
   for (const double lead : {a, b}) {
-    CamRequest r = req;
+    assessment::CamRequest r = req;
     r.lead_s = lead;
-    validate_cam_request(r, cfg);
+    assessment::validate_cam_request(r, cfg);
   }
   std::vector<double> leads;
   leads.reserve(static_cast<std::size_t>(n));
@@ -39,11 +39,11 @@ std::vector<double> sweep_leads(const CamLeadSweep& s, const CamRequest& req, co
   return leads;
 }
 
-nlohmann::json outcome_json(const EncounterOutcome& e) {
+nlohmann::json outcome_json(const assessment::EncounterOutcome& e) {
   return {{"pc", e.pc}, {"miss_m", e.miss_m}, {"tca_s", e.tca_s}, {"rel_speed_mps", e.rel_speed_mps}};
 }
 
-std::optional<double> burn_utc(const std::optional<double>& epoch_utc_j2000_s, const CamPlan& p) {
+std::optional<double> burn_utc(const std::optional<double>& epoch_utc_j2000_s, const assessment::CamPlan& p) {
   if (!epoch_utc_j2000_s) return std::nullopt;
   return *epoch_utc_j2000_s + p.burn_from_epoch_s;
 }
@@ -52,11 +52,11 @@ std::string utc_text(double t_j2000_s) {
   return format_calendar_utc(calendar_from_seconds_since_j2000(t_j2000_s));
 }
 
-nlohmann::json recommended_json(const RecommendedPc& r) {
+nlohmann::json recommended_json(const assessment::RecommendedPc& r) {
   return {{"pc", r.pc}, {"method", r.method}, {"reason", r.why}};
 }
 
-nlohmann::json plan_json(const CamPlan& p, const std::optional<double>& epoch_utc_j2000_s) {
+nlohmann::json plan_json(const assessment::CamPlan& p, const std::optional<double>& epoch_utc_j2000_s) {
   using config::vec_json;
   nlohmann::json j = {{"maneuver_needed", p.maneuver_needed}, {"lead_s", p.lead_s},
                       {"pc_target", p.pc_target}, {"dv_mps", p.dv_mps},
@@ -86,7 +86,7 @@ nlohmann::json sweep_json(const PlanCamResult& r) {
                       {"min_miss_m", r.request.min_miss_m},
                       {"along_track_only", r.request.along_track_only}};
   j["rows"] = nlohmann::json::array();
-  for (const CamSweepRow& row : r.sweep)
+  for (const assessment::CamSweepRow& row : r.sweep)
     j["rows"].push_back(row.ok ? plan_json(row.plan, r.epoch_utc_j2000_s)
                                : nlohmann::json{{"lead_s", row.lead_s}, {"error", row.error}});
   return j;
@@ -98,8 +98,8 @@ std::string sweep_csv(const PlanCamResult& r) {
       "miss_after_m,tca_shift_s,pc_before_recommended,pc_after_recommended,method_after,"
       "verified_ok,error\n";
   char b[512];
-  for (const CamSweepRow& row : r.sweep) {
-    const CamPlan& p = row.plan;
+  for (const assessment::CamSweepRow& row : r.sweep) {
+    const assessment::CamPlan& p = row.plan;
     if (!row.ok) {
       (void)std::snprintf(b, sizeof b, "%.6g,,,,,,,,,,,,,,\"", row.lead_s);
       t += b + row.error + "\"\n";
@@ -117,7 +117,7 @@ std::string sweep_csv(const PlanCamResult& r) {
   return t;
 }
 
-std::string burn_text(const CamPlan& p) {
+std::string burn_text(const assessment::CamPlan& p) {
   char b[512];
   (void)std::snprintf(b, sizeof b,
                       "  dv RTN [%.6f, %.6f, %.6f] m/s  |dv| %.6f m/s  (the primary's RTN at "
@@ -149,7 +149,7 @@ std::string burn_text(const CamPlan& p) {
   return t;
 }
 
-std::string plan_text(const PlanCamResult& r, const CamPlan& p) {
+std::string plan_text(const PlanCamResult& r, const assessment::CamPlan& p) {
   char b[256];
   (void)std::snprintf(b, sizeof b, ": burn %.1f s before TCA", p.lead_s);
   std::string t = r.source + b;
@@ -184,10 +184,10 @@ PlanCamRequest read_plan_cam_request_cdm(const config::Scenario& sc, const std::
                                          const std::string& cdm_name, double hbr_m) {
   PlanCamRequest r;
   read_tables(sc, &r);
-  const Cdm cdm = read_cdm_text(cdm_text);
+  const assessment::Cdm cdm = read_cdm_text(cdm_text);
   r.conjunction = conjunction_from_cdm(cdm, hbr_m, config::read_earth(sc));
   r.epoch_utc_j2000_s =
-      seconds_since_j2000_from_calendar(parse_calendar_utc(cdm_value(cdm.relative, "TCA")));
+      seconds_since_j2000_from_calendar(parse_calendar_utc(assessment::cdm_value(cdm.relative, "TCA")));
   sc.check_all_used();
   r.source = "cdm " + cdm_name;
   return r;
@@ -198,8 +198,8 @@ namespace {
 // The recommended Pc before the burn (pc_method_choice.hpp), after the planner has accepted
 // the encounter (it refuses a zero relative speed before any escalation runs).
 void add_recommended_pc(const PlanCamRequest& req, PlanCamResult* r) {
-  const ConjunctionInput& in = req.conjunction;
-  const PcChoice c = choose_pc(assess(in, req.assess_config), in.hbr_m, req.assess_config,
+  const assessment::ConjunctionInput& in = req.conjunction;
+  const assessment::PcChoice c = assessment::choose_pc(assessment::assess(in, req.assess_config), in.hbr_m, req.assess_config,
                                in.earth, in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov);
   r->pc_before_recommended = c.pc;
   r->pc_method_before = c.method;
@@ -214,14 +214,14 @@ PlanCamResult run_plan_cam(const PlanCamRequest& req) {
   r.request = req.cam;
   r.epoch_utc_j2000_s = req.epoch_utc_j2000_s;
   if (req.sweep) {
-    r.sweep = sweep_cam_lead(req.conjunction, sweep_leads(*req.sweep, req.cam, req.cam_config),
+    r.sweep = assessment::sweep_cam_lead(req.conjunction, sweep_leads(*req.sweep, req.cam, req.cam_config),
                              req.cam, req.assess_config, req.cam_config);
     add_recommended_pc(req, &r);
     return r;
   }
-  r.plan = plan_cam(req.conjunction, req.cam, req.assess_config, req.cam_config);
+  r.plan = assessment::plan_cam(req.conjunction, req.cam, req.assess_config, req.cam_config);
   r.burn_utc_j2000_s = burn_utc(req.epoch_utc_j2000_s, *r.plan);
-  if (r.burn_utc_j2000_s) r.burn_unix_utime_us = unix_utime_from_j2000(*r.burn_utc_j2000_s);
+  if (r.burn_utc_j2000_s) r.burn_unix_utime_us = assessment::unix_utime_from_j2000(*r.burn_utc_j2000_s);
   r.pc_before_recommended = r.plan->before_recommended.pc;
   r.pc_method_before = r.plan->before_recommended.method;
   r.pc_method_reason = r.plan->before_recommended.why;
@@ -239,4 +239,4 @@ nlohmann::json to_json(const PlanCamResult& r) {
 
 std::string to_text(const PlanCamResult& r) { return r.plan ? plan_text(r, *r.plan) : sweep_csv(r); }
 
-}  // namespace evade::assessment
+}  // namespace evade::commands

@@ -1,18 +1,18 @@
-// `evade assess` as a library call (include/evade/assessment/assess_command.hpp): the request
+// `evade assess` as a library call (include/evade/commands/assess_command.hpp): the request
 // read from a scenario, a CDM or the encounter plane, the assessment (assess.hpp; the Pc
 // methods of Foster & Estes 1992, Chan 2008, Alfano 2005 and Alfano 2009), and the result's
 // JSON and text forms.
-#include "evade/assessment/assess_command.hpp"
+#include "evade/commands/assess_command.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/config/json_values.hpp"
 #include "evade/config/read_params.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 namespace {
 
 template <class T>
@@ -21,42 +21,42 @@ nlohmann::json optional_json(const std::optional<T>& v) {
 }
 
 // The message's own relative values, beside what is recomputed from its states.
-CdmFigures cdm_figures(const Cdm& c) {
+CdmFigures cdm_figures(const assessment::Cdm& c) {
   auto num = [&](const char* k) {
-    const std::string v = cdm_value(c.relative, k);
+    const std::string v = assessment::cdm_value(c.relative, k);
     return v.empty() ? std::optional<double>() : std::optional<double>(std::stod(v));
   };
   CdmFigures f;
-  f.message_id = cdm_value(c.header, "MESSAGE_ID");
-  f.tca_utc = cdm_value(c.relative, "TCA");
+  f.message_id = assessment::cdm_value(c.header, "MESSAGE_ID");
+  f.tca_utc = assessment::cdm_value(c.relative, "TCA");
   f.miss_distance_m = num("MISS_DISTANCE");
   f.relative_speed_mps = num("RELATIVE_SPEED");
   f.collision_probability = num("COLLISION_PROBABILITY");
-  const std::string method = cdm_value(c.relative, "COLLISION_PROBABILITY_METHOD");
+  const std::string method = assessment::cdm_value(c.relative, "COLLISION_PROBABILITY_METHOD");
   if (!method.empty()) f.collision_probability_method = method;
-  f.unit_notes = cdm_unit_notes(c);
-  for (const std::string& n : cdm_covariance_notes(c)) f.unit_notes.push_back(n);
+  f.unit_notes = assessment::cdm_unit_notes(c);
+  for (const std::string& n : assessment::cdm_covariance_notes(c)) f.unit_notes.push_back(n);
   return f;
 }
 
-AssessResult run_plane(const AssessRequest& req, const PrincipalEncounter& pe) {
+AssessResult run_plane(const AssessRequest& req, const assessment::PrincipalEncounter& pe) {
   if (req.mc_samples > 0) throw std::invalid_argument("--mc needs states (--scenario or --cdm)");
   AssessResult r;
   r.source = req.source;
   r.hbr_m = req.plane_hbr_m;
-  r.pc_max = pc_max_alfano(pe, r.hbr_m);
-  r.pc_2d = pc_2d(pe, r.hbr_m).pc;
-  r.pc_chan = pc_chan(pe, r.hbr_m);
+  r.pc_max = assessment::pc_max_alfano(pe, r.hbr_m);
+  r.pc_2d = assessment::pc_2d(pe, r.hbr_m).pc;
+  r.pc_chan = assessment::pc_chan(pe, r.hbr_m);
   r.miss_m = std::hypot(pe.miss_x_m, pe.miss_y_m);
   r.principal = pe;
   r.pc = r.pc_2d;
   return r;
 }
 
-AssessResult run_states(const AssessRequest& req, const ConjunctionInput& in) {
-  std::optional<MonteCarloOptions> mc;
+AssessResult run_states(const AssessRequest& req, const assessment::ConjunctionInput& in) {
+  std::optional<assessment::MonteCarloOptions> mc;
   if (req.mc_samples > 0) {
-    mc = MonteCarloOptions{};
+    mc = assessment::MonteCarloOptions{};
     mc->samples = req.mc_samples;
     mc->seed = req.mc_seed;
     mc->window_s = req.config.window_s;  // 0: assess() takes mc_window_s
@@ -64,7 +64,7 @@ AssessResult run_states(const AssessRequest& req, const ConjunctionInput& in) {
     mc->wave_blocks = req.mc_exec.wave_blocks;
     mc->j2 = req.config.mc_j2;
   }
-  const Assessment a = assess(in, req.config, mc, req.mc_exec.runner);
+  const assessment::Assessment a = assessment::assess(in, req.config, mc, req.mc_exec.runner);
   AssessResult r;
   r.source = req.source;
   r.hbr_m = in.hbr_m;
@@ -80,7 +80,7 @@ AssessResult run_states(const AssessRequest& req, const ConjunctionInput& in) {
                          a.npd,     a.min_eigenvalue, a.plane,   a.short_term};
   if (req.cdm) r.cdm = cdm_figures(*req.cdm);
   const bool six = in.obj[0].has_velocity_cov && in.obj[1].has_velocity_cov;
-  r.choice = choose_pc(a, r.hbr_m, req.config, in.earth, six, req.mc_exec, true);
+  r.choice = assessment::choose_pc(a, r.hbr_m, req.config, in.earth, six, req.mc_exec, true);
   r.pc = r.choice->pc;
   r.method = r.choice->method;
   if (!r.pc_mc && r.choice->mc) r.pc_mc = r.choice->mc;
@@ -95,7 +95,7 @@ nlohmann::json plane_json(const AssessResult& r) {
     j["miss_y_m"] = r.states->plane.miss_m(1);
     j["cov_m2"] = config::matrix_json(r.states->plane.cov_m2);
   }
-  const PrincipalEncounter& pe = r.principal;
+  const assessment::PrincipalEncounter& pe = r.principal;
   j["principal"] = {{"miss_x_m", pe.miss_x_m}, {"miss_y_m", pe.miss_y_m},
                     {"sigma_x_m", pe.sigma_x_m}, {"sigma_y_m", pe.sigma_y_m}};
   return j;
@@ -113,7 +113,7 @@ void add_states_json(const StatesAtTca& s, nlohmann::json* j) {
                         {"reason", s.short_term.reason}};
 }
 
-void add_monte_carlo_json(const MonteCarloResult& mc, nlohmann::json* j) {
+void add_monte_carlo_json(const assessment::MonteCarloResult& mc, nlohmann::json* j) {
   (*j)["pc_mc"] = mc.pc;
   (*j)["pc_mc_low"] = mc.pc_low;
   (*j)["pc_mc_high"] = mc.pc_high;
@@ -122,20 +122,20 @@ void add_monte_carlo_json(const MonteCarloResult& mc, nlohmann::json* j) {
                 {"motion", mc.j2 ? "two-body + J2" : "two-body"}};
 }
 
-nlohmann::json usage_json(const std::vector<UsageFlag>& flags) {
+nlohmann::json usage_json(const std::vector<assessment::UsageFlag>& flags) {
   nlohmann::json a = nlohmann::json::array();
-  for (const UsageFlag& f : flags) {
+  for (const assessment::UsageFlag& f : flags) {
     a.push_back({{"check", f.name}, {"value", f.value}, {"threshold", f.threshold},
                  {"violated", f.violated}, {"meaning", f.meaning}});
   }
   return a;
 }
 
-void add_choice_json(const PcChoice& c, nlohmann::json* j) {
+void add_choice_json(const assessment::PcChoice& c, nlohmann::json* j) {
   (*j)["method_reason"] = c.why;
   (*j)["usage"] = {{"pc_2d", usage_json(c.usage_2d)}};
   if (!c.nc3d) return;  // 3x3 covariances: no 3D-Nc
-  const Nc3dResult& n = *c.nc3d;
+  const assessment::Nc3dResult& n = *c.nc3d;
   (*j)["pc_3d_nc"] = n.pc;
   (*j)["usage"]["pc_3d_nc"] = usage_json(c.usage_3d_nc);
   (*j)["nc3d"] = {{"window_s", {n.t_begin_s, n.t_end_s}}, {"t_peak_s", n.t_peak_s},
@@ -155,8 +155,8 @@ std::string choice_text(const AssessResult& r) {
                       r.choice ? r.choice->why.c_str() : "encounter plane given: 2D only");
   t += b;
   if (!r.choice) return t;
-  auto flags = [&](const char* what, const std::vector<UsageFlag>& f) {
-    for (const UsageFlag& u : f) {
+  auto flags = [&](const char* what, const std::vector<assessment::UsageFlag>& f) {
+    for (const assessment::UsageFlag& u : f) {
       (void)std::snprintf(b, sizeof b, "    %s %-10s %.4g (limit %.4g)%s: %s\n", what,
                           u.name.c_str(), u.value, u.threshold, u.violated ? " FAILS" : "",
                           u.meaning.c_str());
@@ -203,7 +203,7 @@ std::string repair_line(const StatesAtTca& s, int i, bool text) {
 
 AssessRequest read_assess_request(const config::Scenario& sc) {
   AssessRequest r;
-  config::read_params(sc, "assessment.", assess_params(), &r.config);
+  config::read_params(sc, "assessment.", assessment::assess_params(), &r.config);
   r.conjunction = read_conjunction_scenario(sc);
   sc.check_all_used();
   r.source = "scenario " + sc.source();
@@ -213,7 +213,7 @@ AssessRequest read_assess_request(const config::Scenario& sc) {
 AssessRequest read_assess_request_cdm(const config::Scenario& sc, const std::string& cdm_text,
                                       const std::string& cdm_name, double hbr_m) {
   AssessRequest r;
-  config::read_params(sc, "assessment.", assess_params(), &r.config);
+  config::read_params(sc, "assessment.", assessment::assess_params(), &r.config);
   r.cdm = read_cdm_text(cdm_text);
   r.conjunction = conjunction_from_cdm(*r.cdm, hbr_m, config::read_earth(sc));
   sc.check_all_used();
@@ -221,7 +221,7 @@ AssessRequest read_assess_request_cdm(const config::Scenario& sc, const std::str
   return r;
 }
 
-AssessRequest encounter_plane_request(const PrincipalEncounter& plane, double hbr_m) {
+AssessRequest encounter_plane_request(const assessment::PrincipalEncounter& plane, double hbr_m) {
   AssessRequest r;
   r.source = "encounter plane";
   r.encounter_plane = plane;
@@ -306,4 +306,4 @@ std::vector<std::string> assess_warnings(const AssessResult& r) {
   return w;
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::commands

@@ -23,7 +23,7 @@
 #include "evade/assessment/cdm_from_event.hpp"
 #include "evade/core/state.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 
 struct ScreenCdmFile;
 
@@ -35,7 +35,7 @@ struct ScreenCdmOptions {
   double hbr_m = 0.0;                    ///< hard-body radius [m]; 0: the objects' radii
   /// The Pc method choice and its escalated Monte Carlo (assessment_params: the
   /// `assessment.*` keys; the CLI sets mc_max_samples with --mc-max-samples).
-  AssessConfig assess;
+  assessment::AssessConfig assess;
   bool assess_given = false;             ///< a flag set `assess` (only with a covariance)
   std::optional<double> creation_utc_j2000_s;  ///< CREATION_DATE; empty: the clock now
   /// When set, each message goes here as soon as it is made (the CLI writes its file) and
@@ -82,9 +82,9 @@ struct ScreenCdms {
 /// std::invalid_argument for a covariance without a hard-body radius (objects without size
 /// and no --hbr-m) and whatever cdm_from_event refuses.
 ScreenCdms screen_event_cdms(const ScreenCdmOptions& o, const ScreenCdmRun& run,
-                             std::vector<ScreeningEvent> events);
+                             std::vector<assessment::ScreeningEvent> events);
 
 /// {dir, format, count, covariance, files: [{file, message_id, pc}]}.
 nlohmann::json to_json(const ScreenCdms& c);
 
-}  // namespace evade::assessment
+}  // namespace evade::commands

@@ -19,7 +19,7 @@
 #include "evade/assessment/pc_method_choice.hpp"
 #include "evade/config/scenario.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 
 /// Lead times from first_lead_s to last_lead_s, count of them evenly spaced (count 1: the
 /// first only).
@@ -31,12 +31,12 @@ struct CamLeadSweep {
 
 struct PlanCamRequest {
   std::string source;             ///< how the result names its input ("scenario NAME", ...)
-  ConjunctionInput conjunction;   ///< both objects' states and covariances
-  AssessConfig assess_config;     ///< the assessment.* parameter table
-  CamConfig cam_config;           ///< the cam.* parameter table
+  assessment::ConjunctionInput conjunction;   ///< both objects' states and covariances
+  assessment::AssessConfig assess_config;     ///< the assessment.* parameter table
+  assessment::CamConfig cam_config;           ///< the cam.* parameter table
   /// UTC of the given states [s since J2000] (a CDM's TCA); a scenario has none.
   std::optional<double> epoch_utc_j2000_s;
-  CamRequest cam;                 ///< lead_s, pc_max, min_miss_m, along_track_only
+  assessment::CamRequest cam;                 ///< lead_s, pc_max, min_miss_m, along_track_only
   std::optional<CamLeadSweep> sweep;  ///< the trade space over lead times instead of cam.lead_s
 };
 
@@ -52,14 +52,14 @@ PlanCamRequest read_plan_cam_request_cdm(const config::Scenario& sc, const std::
 
 struct PlanCamResult {
   std::string source;
-  CamRequest request;  ///< as asked (lead_s unused with a sweep)
+  assessment::CamRequest request;  ///< as asked (lead_s unused with a sweep)
   std::optional<double> epoch_utc_j2000_s;  ///< UTC of the given states, when known
   /// One lead time: the plan, with the burn's UTC [s since J2000] and as a Unix utime [us]
   /// when the states' UTC is known.
-  std::optional<CamPlan> plan;
+  std::optional<assessment::CamPlan> plan;
   std::optional<double> burn_utc_j2000_s;
   std::optional<std::int64_t> burn_unix_utime_us;
-  std::vector<CamSweepRow> sweep;  ///< with a sweep request: one row per lead time
+  std::vector<assessment::CamSweepRow> sweep;  ///< with a sweep request: one row per lead time
   /// The recommended Pc before the burn (pc_method_choice.hpp) and its method. The planner's
   /// model is the 2D Pc; the need for a burn and its verification use the recommended Pc
   /// (CamPlan::before_recommended, verified_recommended; cam_planner.hpp).
@@ -79,4 +79,4 @@ nlohmann::json to_json(const PlanCamResult& r);
 /// before, predicted and verified); with a sweep, the trade space as CSV.
 std::string to_text(const PlanCamResult& r);
 
-}  // namespace evade::assessment
+}  // namespace evade::commands

@@ -24,20 +24,20 @@
 #include "evade/assessment/pc_method_choice.hpp"
 #include "evade/config/scenario.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 
 struct AssessRequest {
   std::string source;  ///< how the result names its input ("scenario NAME", "cdm NAME", ...)
-  AssessConfig config;  ///< the assessment.* parameter table
+  assessment::AssessConfig config;  ///< the assessment.* parameter table
   /// Both objects' states and covariances (from a scenario or a CDM); or else
-  std::optional<ConjunctionInput> conjunction;
+  std::optional<assessment::ConjunctionInput> conjunction;
   /// the encounter plane given directly (no states: no TCA, covariance or short-term checks).
-  std::optional<PrincipalEncounter> encounter_plane;
+  std::optional<assessment::PrincipalEncounter> encounter_plane;
   double plane_hbr_m = 0.0;    ///< hard-body radius with encounter_plane [m]
-  std::optional<Cdm> cdm;      ///< the message the states came from: its own figures reported
+  std::optional<assessment::Cdm> cdm;      ///< the message the states came from: its own figures reported
   long mc_samples = 0;         ///< Monte Carlo samples (states only); 0: no Monte Carlo
   std::uint64_t mc_seed = 1;   ///< Monte Carlo seed
-  McExecution mc_exec;         ///< how a Monte Carlo runs (threads; MPI ranks)
+  assessment::McExecution mc_exec;         ///< how a Monte Carlo runs (threads; MPI ranks)
 };
 
 /// From a scenario's `conjunction:` block and its assessment.* table; every key of sc must
@@ -49,7 +49,7 @@ AssessRequest read_assess_request(const config::Scenario& sc);
 AssessRequest read_assess_request_cdm(const config::Scenario& sc, const std::string& cdm_text,
                                       const std::string& cdm_name, double hbr_m);
 /// The encounter plane given directly, named "encounter plane".
-AssessRequest encounter_plane_request(const PrincipalEncounter& plane, double hbr_m);
+AssessRequest encounter_plane_request(const assessment::PrincipalEncounter& plane, double hbr_m);
 
 /// The message's own relative figures, beside those recomputed from its states.
 struct CdmFigures {
@@ -65,14 +65,14 @@ struct CdmFigures {
 
 /// What only an assessment from states has.
 struct StatesAtTca {
-  std::array<ObjectState, 2> at_tca;  ///< states and covariances used (after TCA shift, repair)
+  std::array<assessment::ObjectState, 2> at_tca;  ///< states and covariances used (after TCA shift, repair)
   double tca_shift_s = 0.0;           ///< TCA minus the epoch of the given states [s]
   std::string tca_method;             ///< how the states were brought to TCA
   std::string covariance_propagation;
   std::array<bool, 2> covariance_repaired = {false, false};  ///< by eigenvalue clipping
   std::array<double, 2> covariance_min_eigenvalue_m2 = {0.0, 0.0};
-  EncounterPlane plane;  ///< miss and combined covariance in the encounter frame
-  ShortTermCheck short_term;
+  assessment::EncounterPlane plane;  ///< miss and combined covariance in the encounter frame
+  assessment::ShortTermCheck short_term;
 };
 
 struct AssessResult {
@@ -80,18 +80,18 @@ struct AssessResult {
   double hbr_m = 0.0;
   double miss_m = 0.0;                  ///< at TCA (states) or in the plane given [m]
   std::optional<double> rel_speed_mps;  ///< at TCA; none for an encounter plane given directly
-  PrincipalEncounter principal;         ///< miss and sigmas along the plane's principal axes
+  assessment::PrincipalEncounter principal;         ///< miss and sigmas along the plane's principal axes
   // The Pc of each method. A further method (e.g. a 3-D Nc or another Monte Carlo) is one
   // more field here, std::optional when computed on request or only from states, and one
   // more key in to_json; nothing else changes.
   double pc_2d = 0.0;
   std::optional<double> pc_2d_abs_error;  ///< quadrature error estimate (reported from states)
   double pc_chan = 0.0;
-  PcMaxResult pc_max;                     ///< Alfano's maximum and its covariance scale
-  std::optional<MonteCarloResult> pc_mc;  ///< with mc_samples > 0, or run by the escalation
+  assessment::PcMaxResult pc_max;                     ///< Alfano's maximum and its covariance scale
+  std::optional<assessment::MonteCarloResult> pc_mc;  ///< with mc_samples > 0, or run by the escalation
   double pc = 0.0;              ///< the recommended Pc (pc_method_choice.hpp)
   std::string method = "2d";    ///< the method that produced it: "2d", "3d_nc" or "mc"
-  std::optional<PcChoice> choice;  ///< from states: the usage checks, 3D-Nc when it ran
+  std::optional<assessment::PcChoice> choice;  ///< from states: the usage checks, 3D-Nc when it ran
   int mc_ranks = 1;                ///< MPI ranks the Monte Carlo ran on
   std::optional<StatesAtTca> states;      ///< from states only
   std::optional<CdmFigures> cdm;          ///< from a CDM only
@@ -112,4 +112,4 @@ std::string to_text(const AssessResult& r);
 /// covariance repaired before the Pc, and each CDM unit note ("note: ...").
 std::vector<std::string> assess_warnings(const AssessResult& r);
 
-}  // namespace evade::assessment
+}  // namespace evade::commands

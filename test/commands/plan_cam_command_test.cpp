@@ -13,10 +13,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/assessment/plan_cam_command.hpp"
+#include "evade/commands/plan_cam_command.hpp"
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::commands;
 
 std::string file_text(const std::string& path) {
   std::ifstream in(path);

@@ -1,5 +1,5 @@
-// Conjunction readers (include/evade/assessment/conjunction_input.hpp).
-#include "evade/assessment/conjunction_input.hpp"
+// Conjunction readers (include/evade/commands/conjunction_input.hpp).
+#include "evade/commands/conjunction_input.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -11,7 +11,7 @@
 #include "evade/assessment/covariance.hpp"
 #include "evade/config/read_params.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 namespace {
 
 // A 3x3 or 6x6 nested list at key.
@@ -36,8 +36,8 @@ Mat6 read_matrix(const config::Scenario& sc, const std::string& key, bool* six) 
   return m;
 }
 
-ObjectState read_object(const config::Scenario& sc, const std::string& p, const std::string& name) {
-  ObjectState o;
+assessment::ObjectState read_object(const config::Scenario& sc, const std::string& p, const std::string& name) {
+  assessment::ObjectState o;
   o.name = name;
   o.state.r_eci_m = sc.get_vec3(p + ".r_eci_m", -1e9, 1e9);
   o.state.v_eci_mps = sc.get_vec3(p + ".v_eci_mps", -1e6, 1e6);
@@ -49,19 +49,19 @@ ObjectState read_object(const config::Scenario& sc, const std::string& p, const 
   bool six = false;
   const Mat6 m = read_matrix(sc, p + (eci ? ".cov_eci_m2" : ".cov_rtn_m2"), &six);
   o.has_velocity_cov = six;
-  o.cov_eci = eci ? m : cov_eci_from_rtn(m, o.state);
+  o.cov_eci = eci ? m : assessment::cov_eci_from_rtn(m, o.state);
   return o;
 }
 
 }  // namespace
 
-Cdm read_cdm_text(const std::string& text) {
+assessment::Cdm read_cdm_text(const std::string& text) {
   const auto p = text.find_first_not_of(" \t\r\n");
-  return p != std::string::npos && text[p] == '<' ? read_cdm_xml(text) : read_cdm_kvn(text);
+  return p != std::string::npos && text[p] == '<' ? assessment::read_cdm_xml(text) : assessment::read_cdm_kvn(text);
 }
 
-ConjunctionInput read_conjunction_scenario(const config::Scenario& sc) {
-  ConjunctionInput in;
+assessment::ConjunctionInput read_conjunction_scenario(const config::Scenario& sc) {
+  assessment::ConjunctionInput in;
   in.hbr_m = sc.get_double("conjunction.hbr_m", 1e-3, 1e4);
   in.obj[0] = read_object(sc, "conjunction.object1", "object1");
   in.obj[1] = read_object(sc, "conjunction.object2", "object2");
@@ -69,8 +69,8 @@ ConjunctionInput read_conjunction_scenario(const config::Scenario& sc) {
   return in;
 }
 
-ConjunctionInput conjunction_from_cdm(const Cdm& cdm, double hbr_m, const EarthModel& earth) {
-  ConjunctionInput in;
+assessment::ConjunctionInput conjunction_from_cdm(const assessment::Cdm& cdm, double hbr_m, const EarthModel& earth) {
+  assessment::ConjunctionInput in;
   in.earth = earth;
   in.hbr_m = hbr_m;
   if (hbr_m != 0.0 && !(std::isfinite(hbr_m) && hbr_m > 0.0)) {  // 0: not given
@@ -78,8 +78,8 @@ ConjunctionInput conjunction_from_cdm(const Cdm& cdm, double hbr_m, const EarthM
                                 ": the hard-body radius must be a finite number > 0 [m]");
   }
   if (hbr_m == 0.0) {
-    const std::string a1 = cdm_value(cdm.object[0].additional_parameters, "AREA_PC");
-    const std::string a2 = cdm_value(cdm.object[1].additional_parameters, "AREA_PC");
+    const std::string a1 = assessment::cdm_value(cdm.object[0].additional_parameters, "AREA_PC");
+    const std::string a2 = assessment::cdm_value(cdm.object[1].additional_parameters, "AREA_PC");
     if (a1.empty() || a2.empty()) {
       throw std::invalid_argument(
           "CDM: no hard-body radius: give --hbr-m, or AREA_PC for both objects");
@@ -88,21 +88,21 @@ ConjunctionInput conjunction_from_cdm(const Cdm& cdm, double hbr_m, const EarthM
                std::sqrt(std::strtod(a2.c_str(), nullptr) / kPi);
   }
   for (int i = 0; i < 2; ++i) {
-    const std::string frame = cdm_value(cdm.object[i].metadata, "REF_FRAME");
+    const std::string frame = assessment::cdm_value(cdm.object[i].metadata, "REF_FRAME");
     if (frame == "ITRF") {
       throw std::invalid_argument("CDM: REF_FRAME = ITRF is not supported (EME2000 or GCRF)");
     }
-    in.obj[i].name = cdm_value(cdm.object[i].metadata, "OBJECT_NAME");
-    in.obj[i].state = cdm_state(cdm, i);
-    const Mat6 rtn = cdm_cov_rtn(cdm, i);
+    in.obj[i].name = assessment::cdm_value(cdm.object[i].metadata, "OBJECT_NAME");
+    in.obj[i].state = assessment::cdm_state(cdm, i);
+    const Mat6 rtn = assessment::cdm_cov_rtn(cdm, i);
     if (rtn.block<3, 3>(0, 0).isZero(0.0)) {  // how a CDM says "not known" (cdm_from_event.hpp)
       throw std::invalid_argument("CDM: object " + std::to_string(i + 1) + " (" + in.obj[i].name +
                                   "): the position covariance is all zero (not known): no Pc");
     }
-    in.obj[i].cov_eci = cov_eci_from_rtn(rtn, in.obj[i].state);
+    in.obj[i].cov_eci = assessment::cov_eci_from_rtn(rtn, in.obj[i].state);
     in.obj[i].has_velocity_cov = true;
   }
   return in;
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::commands
