@@ -4,7 +4,7 @@
 namespace evade::assessment {
 namespace {
 
-const Param<CamConfig> kRows[] = {
+const Param<CamConfig> kCamRows[] = {
     EVADE_PARAM_REAL(CamConfig, max_dv_mps, "m/s", 0.0, 1000.0, true,
                      "largest impulsive |dv| the avoidance planner may use (cap)"),
     EVADE_PARAM_REAL(CamConfig, max_lead_s, "s", 0.0, 864000.0, true,
@@ -26,6 +26,6 @@ const Param<CamConfig> kRows[] = {
 
 }  // namespace
 
-ParamTable<CamConfig> cam_params() noexcept { return make_param_table(kRows); }
+ParamTable<CamConfig> cam_params() noexcept { return make_param_table(kCamRows); }
 
 }  // namespace evade::assessment

@@ -13,7 +13,7 @@ namespace {
 
 // Required rows first (a missing key is named), then every row, checked.
 template <class Cfg>
-void read_table(const config::Scenario& sc, const std::string& prefix,
+void read_formation_table(const config::Scenario& sc, const std::string& prefix,
                 const ParamTable<Cfg>& table, Cfg* cfg) {
   config::require_params(sc, prefix, table, *cfg);
   config::read_params(sc, prefix, table, cfg);
@@ -21,7 +21,7 @@ void read_table(const config::Scenario& sc, const std::string& prefix,
 
 void read_formation_scalars(const config::Scenario& sc, formation::FormationSpec& f) {
   formation::FormationParams p;
-  read_table(sc, "formation.", formation::formation_params(), &p);
+  read_formation_table(sc, "formation.", formation::formation_params(), &p);
   if (p.box_delta_m > p.side_length_m / 8.0) {
     throw config::ConfigError(
         sc.source() + ": key 'formation.box_delta_m' = '" + param_value_text(p.box_delta_m) +
@@ -102,12 +102,12 @@ formation::PlanInputs read_plan_inputs(const config::Scenario& sc) {
   const std::vector<std::string> names = read_groups(sc, f);
   read_names(sc, names, in);
   formation::ConjunctionSpec& c = in.conjunction;
-  read_table(sc, "conjunction.", formation::conjunction_spec_params(), &c);
+  read_formation_table(sc, "conjunction.", formation::conjunction_spec_params(), &c);
   c.miss_rsw_m = sc.get_vec3("conjunction.miss_rsw_m", -1e5, 1e5);
   c.v_rel_rsw_mps = sc.get_vec3("conjunction.v_rel_rsw_mps", -2e4, 2e4);
-  read_table(sc, "maneuver.", formation::maneuver_timing_params(), &in.timing);
+  read_formation_table(sc, "maneuver.", formation::maneuver_timing_params(), &in.timing);
   formation::PropagationParams pp;
-  read_table(sc, "propagation.", formation::propagation_params(), &pp);
+  read_formation_table(sc, "propagation.", formation::propagation_params(), &pp);
   in.propagation.integrator.rel_tol = pp.rel_tol;
   in.propagation.integrator.abs_tol = pp.abs_tol_m;
   in.propagation.samples_per_rev = pp.samples_per_rev;

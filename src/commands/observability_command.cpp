@@ -39,7 +39,7 @@ EarthModel read_hcw_earth(const config::Scenario& sc) {
 }
 
 // The table; with a --seed override isres.seed is only marked used (not echoed), as before.
-observability::ObservabilityParams read_table(const config::Scenario& sc, long seed_override) {
+observability::ObservabilityParams read_observability_table(const config::Scenario& sc, long seed_override) {
   observability::ObservabilityParams p;
   config::require_params(sc, "", observability::observability_params(), p);
   if (seed_override < 0) {
@@ -132,7 +132,7 @@ nlohmann::json isres_json(const ObservabilityResult& r) {
 ObservabilityRequest read_observability_request(const config::Scenario& sc,
                                                 const ObservabilityOverrides& overrides) {
   const EarthModel earth = read_hcw_earth(sc);
-  const observability::ObservabilityParams p = read_table(sc, overrides.seed);
+  const observability::ObservabilityParams p = read_observability_table(sc, overrides.seed);
   Vec6 x_chaser_p0;
   x_chaser_p0 << sc.get_vec3("chaser.r_paper_m", -1e8, 1e8),
       sc.get_vec3("chaser.v_paper_mps", -1e4, 1e4);

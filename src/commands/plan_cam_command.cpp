@@ -117,7 +117,7 @@ std::string sweep_csv(const PlanCamResult& r) {
   return t;
 }
 
-std::string burn_text(const assessment::CamPlan& p) {
+std::string cam_burn_text(const assessment::CamPlan& p) {
   char b[512];
   (void)std::snprintf(b, sizeof b,
                       "  dv RTN [%.6f, %.6f, %.6f] m/s  |dv| %.6f m/s  (the primary's RTN at "
@@ -166,7 +166,7 @@ std::string plan_text(const PlanCamResult& r, const assessment::CamPlan& p) {
          "encounter; whether a burn is needed and whether it meets pc_max are decided by the "
          "recommended Pc\n";
   if (!p.maneuver_needed) return t + "  no manoeuvre needed\n";
-  return t + burn_text(p);
+  return t + cam_burn_text(p);
 }
 
 }  // namespace

@@ -18,7 +18,7 @@
 namespace evade::commands {
 namespace {
 
-constexpr double kMaxSpanS = 366.0 * 86400.0;  // one year of SGP4 is already far past its use
+constexpr double kMaxPropagateSpanS = 366.0 * 86400.0;  // one year of SGP4 is already far past its use
 constexpr double kMaxStepsPerObject = 100000.0;
 
 CatalogTrack propagate_object(const sgp4::MeanElements& m, double start_j2000_s,
@@ -65,7 +65,7 @@ nlohmann::json track_json(const CatalogTrack& t) {
 }  // namespace
 
 void check_propagate_catalog_request(const PropagateCatalogRequest& req) {
-  if (!(req.span_s >= 0.0 && req.span_s <= kMaxSpanS))
+  if (!(req.span_s >= 0.0 && req.span_s <= kMaxPropagateSpanS))
     throw std::invalid_argument("--span-s = " + std::to_string(req.span_s) +
                                 " is invalid: expected a number in [0, 31622400] s");
   if (!(req.step_s > 0.0) || req.span_s / req.step_s > kMaxStepsPerObject)

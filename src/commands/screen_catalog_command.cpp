@@ -22,7 +22,7 @@
 namespace evade::commands {
 namespace {
 
-constexpr double kMaxSpanS = 31.0 * 86400.0;  // SGP4 element sets are stale after weeks
+constexpr double kMaxScreenSpanS = 31.0 * 86400.0;  // SGP4 element sets are stale after weeks
 
 std::string utc(double j2000_s) { return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s)); }
 
@@ -126,7 +126,7 @@ ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const conjun
 }  // namespace
 
 void ScreenCatalogRequest::validate() const {
-  if (!(span_s > 0.0 && span_s <= kMaxSpanS))
+  if (!(span_s > 0.0 && span_s <= kMaxScreenSpanS))
     throw std::invalid_argument("--span-s = " + std::to_string(span_s) +
                                 " is invalid: expected a number in (0, 2678400] s");
   if (!(threshold_m > 0.0 && threshold_m <= 1e8))

@@ -22,7 +22,7 @@ double now_utc_j2000_s() {
   return unix_s - 946728000.0;  // 2000-01-01T12:00:00 UTC in Unix seconds
 }
 
-assessment::EventCdmOptions base_options(const ScreenCdmOptions& o, const ScreenCdmRun& run) {
+assessment::EventCdmOptions cdm_base_options(const ScreenCdmOptions& o, const ScreenCdmRun& run) {
   assessment::EventCdmOptions opt;
   opt.creation_utc_j2000_s = o.creation_utc_j2000_s ? *o.creation_utc_j2000_s : now_utc_j2000_s();
   opt.hbr_m = o.hbr_m;
@@ -109,7 +109,7 @@ ScreenCdms screen_event_cdms(const ScreenCdmOptions& o, const ScreenCdmRun& run,
                                                 : "assumed RTN sigmas " + o.cov_rtn_sigma_text + " m";
   const std::optional<Mat6> cov = assumed_rtn_covariance(o);
   out.covariance_known = cov.has_value();
-  const assessment::EventCdmOptions base = base_options(o, run);
+  const assessment::EventCdmOptions base = cdm_base_options(o, run);
   std::set<std::string> used;
   for (assessment::ScreeningEvent& ev : events) {
     complete_event(o, run, cov, ev);

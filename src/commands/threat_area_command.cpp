@@ -29,7 +29,7 @@ nlohmann::json intervals_json(const threat::ThreatArea& a) {
 }
 
 // The inputs and the chaser's cost at t0 without evasion.
-nlohmann::json summary_json(const ThreatAreaResult& r) {
+nlohmann::json threat_summary_json(const ThreatAreaResult& r) {
   const threat::ThreatScenario& in = r.scenario;
   const threat::ThreatStudy& s = r.study;
   nlohmann::json j;
@@ -149,7 +149,7 @@ ThreatAreaResult run_threat_area(const ThreatAreaRequest& req) {
 
 nlohmann::json to_json(const ThreatAreaResult& r) {
   const threat::ThreatStudy& s = r.study;
-  nlohmann::json j = summary_json(r);
+  nlohmann::json j = threat_summary_json(r);
   add_evasion_json(s, r.scenario.evasion.use_isres, j);
   if (s.elimination) add_elimination_json(s, *s.elimination, j);
   if (!s.sweep_dv.empty()) {

@@ -32,7 +32,7 @@ void require_keys(const config::Scenario& sc, const ParamTable<Cfg>& table) {
 
 // Reads `table` (prefix "": its keys carry their section) into a default Cfg.
 template <class Cfg>
-Cfg read_table(const config::Scenario& sc, const ParamTable<Cfg>& table) {
+Cfg read_threat_table(const config::Scenario& sc, const ParamTable<Cfg>& table) {
   require_keys(sc, table);
   Cfg cfg;
   config::read_params(sc, "", table, &cfg);
@@ -44,12 +44,12 @@ Cfg read_table(const config::Scenario& sc, const ParamTable<Cfg>& table) {
 threat::ThreatScenario read_threat_scenario(const config::Scenario& sc) {
   threat::ThreatScenario out;
   out.earth = config::read_earth(sc);
-  const auto geometry = read_table(sc, threat::threat_geometry_params());
+  const auto geometry = read_threat_table(sc, threat::threat_geometry_params());
   Vec6 chaser0_rsw;
   chaser0_rsw << sc.get_vec3("chaser.relative_rsw_m", -1e8, 1e8),
       sc.get_vec3("chaser.relative_rsw_mps", -1e4, 1e4);
-  const auto options = read_table(sc, threat::threat_option_params());
-  const auto evasion = read_table(sc, threat::evasion_params());
+  const auto options = read_threat_table(sc, threat::threat_option_params());
+  const auto evasion = read_threat_table(sc, threat::evasion_params());
   sc.mark_used("description");
   sc.check_all_used();
 
