@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "evade/ccsds/cdm_formats.hpp"
 #include "evade/commands/conjunction_input.hpp"
 #include "evade/config/json_values.hpp"
 #include "evade/config/read_params.hpp"
@@ -21,21 +22,21 @@ nlohmann::json optional_json(const std::optional<T>& v) {
 }
 
 // The message's own relative values, beside what is recomputed from its states.
-CdmFigures cdm_figures(const assessment::Cdm& c) {
+CdmFigures cdm_figures(const ccsds::Cdm& c) {
   auto num = [&](const char* k) {
-    const std::string v = assessment::cdm_value(c.relative, k);
+    const std::string v = ccsds::cdm_value(c.relative, k);
     return v.empty() ? std::optional<double>() : std::optional<double>(std::stod(v));
   };
   CdmFigures f;
-  f.message_id = assessment::cdm_value(c.header, "MESSAGE_ID");
-  f.tca_utc = assessment::cdm_value(c.relative, "TCA");
+  f.message_id = ccsds::cdm_value(c.header, "MESSAGE_ID");
+  f.tca_utc = ccsds::cdm_value(c.relative, "TCA");
   f.miss_distance_m = num("MISS_DISTANCE");
   f.relative_speed_mps = num("RELATIVE_SPEED");
   f.collision_probability = num("COLLISION_PROBABILITY");
-  const std::string method = assessment::cdm_value(c.relative, "COLLISION_PROBABILITY_METHOD");
+  const std::string method = ccsds::cdm_value(c.relative, "COLLISION_PROBABILITY_METHOD");
   if (!method.empty()) f.collision_probability_method = method;
-  f.unit_notes = assessment::cdm_unit_notes(c);
-  for (const std::string& n : assessment::cdm_covariance_notes(c)) f.unit_notes.push_back(n);
+  f.unit_notes = ccsds::cdm_unit_notes(c);
+  for (const std::string& n : ccsds::cdm_covariance_notes(c)) f.unit_notes.push_back(n);
   return f;
 }
 
@@ -214,7 +215,7 @@ AssessRequest read_assess_request_cdm(const config::Scenario& sc, const std::str
                                       const std::string& cdm_name, double hbr_m) {
   AssessRequest r;
   config::read_params(sc, "assessment.", assessment::assess_params(), &r.config);
-  r.cdm = read_cdm_text(cdm_text);
+  r.cdm = ccsds::read_cdm_text(cdm_text);
   r.conjunction = conjunction_from_cdm(*r.cdm, hbr_m, config::read_earth(sc));
   sc.check_all_used();
   r.source = "cdm " + cdm_name;

@@ -6,8 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
+#include "evade/ccsds/cdm_formats.hpp"
 #include "evade/assessment/covariance.hpp"
 #include "evade/config/read_params.hpp"
 
@@ -55,11 +54,6 @@ assessment::ObjectState read_object(const config::Scenario& sc, const std::strin
 
 }  // namespace
 
-assessment::Cdm read_cdm_text(const std::string& text) {
-  const auto p = text.find_first_not_of(" \t\r\n");
-  return p != std::string::npos && text[p] == '<' ? assessment::read_cdm_xml(text) : assessment::read_cdm_kvn(text);
-}
-
 assessment::ConjunctionInput read_conjunction_scenario(const config::Scenario& sc) {
   assessment::ConjunctionInput in;
   in.hbr_m = sc.get_double("conjunction.hbr_m", 1e-3, 1e4);
@@ -69,7 +63,7 @@ assessment::ConjunctionInput read_conjunction_scenario(const config::Scenario& s
   return in;
 }
 
-assessment::ConjunctionInput conjunction_from_cdm(const assessment::Cdm& cdm, double hbr_m, const EarthModel& earth) {
+assessment::ConjunctionInput conjunction_from_cdm(const ccsds::Cdm& cdm, double hbr_m, const EarthModel& earth) {
   assessment::ConjunctionInput in;
   in.earth = earth;
   in.hbr_m = hbr_m;
@@ -78,8 +72,8 @@ assessment::ConjunctionInput conjunction_from_cdm(const assessment::Cdm& cdm, do
                                 ": the hard-body radius must be a finite number > 0 [m]");
   }
   if (hbr_m == 0.0) {
-    const std::string a1 = assessment::cdm_value(cdm.object[0].additional_parameters, "AREA_PC");
-    const std::string a2 = assessment::cdm_value(cdm.object[1].additional_parameters, "AREA_PC");
+    const std::string a1 = ccsds::cdm_value(cdm.object[0].additional_parameters, "AREA_PC");
+    const std::string a2 = ccsds::cdm_value(cdm.object[1].additional_parameters, "AREA_PC");
     if (a1.empty() || a2.empty()) {
       throw std::invalid_argument(
           "CDM: no hard-body radius: give --hbr-m, or AREA_PC for both objects");
@@ -88,13 +82,13 @@ assessment::ConjunctionInput conjunction_from_cdm(const assessment::Cdm& cdm, do
                std::sqrt(std::strtod(a2.c_str(), nullptr) / kPi);
   }
   for (int i = 0; i < 2; ++i) {
-    const std::string frame = assessment::cdm_value(cdm.object[i].metadata, "REF_FRAME");
+    const std::string frame = ccsds::cdm_value(cdm.object[i].metadata, "REF_FRAME");
     if (frame == "ITRF") {
       throw std::invalid_argument("CDM: REF_FRAME = ITRF is not supported (EME2000 or GCRF)");
     }
-    in.obj[i].name = assessment::cdm_value(cdm.object[i].metadata, "OBJECT_NAME");
-    in.obj[i].state = assessment::cdm_state(cdm, i);
-    const Mat6 rtn = assessment::cdm_cov_rtn(cdm, i);
+    in.obj[i].name = ccsds::cdm_value(cdm.object[i].metadata, "OBJECT_NAME");
+    in.obj[i].state = ccsds::cdm_state(cdm, i);
+    const Mat6 rtn = ccsds::cdm_cov_rtn(cdm, i);
     if (rtn.block<3, 3>(0, 0).isZero(0.0)) {  // how a CDM says "not known" (cdm_from_event.hpp)
       throw std::invalid_argument("CDM: object " + std::to_string(i + 1) + " (" + in.obj[i].name +
                                   "): the position covariance is all zero (not known): no Pc");

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "evade/assessment/cam_burn_plan.hpp"
+#include "evade/ccsds/cdm_formats.hpp"
 #include "evade/commands/conjunction_input.hpp"
 #include "evade/config/json_values.hpp"
 #include "evade/config/read_params.hpp"
@@ -184,10 +185,10 @@ PlanCamRequest read_plan_cam_request_cdm(const config::Scenario& sc, const std::
                                          const std::string& cdm_name, double hbr_m) {
   PlanCamRequest r;
   read_tables(sc, &r);
-  const assessment::Cdm cdm = read_cdm_text(cdm_text);
+  const ccsds::Cdm cdm = ccsds::read_cdm_text(cdm_text);
   r.conjunction = conjunction_from_cdm(cdm, hbr_m, config::read_earth(sc));
   r.epoch_utc_j2000_s =
-      seconds_since_j2000_from_calendar(parse_calendar_utc(assessment::cdm_value(cdm.relative, "TCA")));
+      seconds_since_j2000_from_calendar(parse_calendar_utc(ccsds::cdm_value(cdm.relative, "TCA")));
   sc.check_all_used();
   r.source = "cdm " + cdm_name;
   return r;

@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
+#include "evade/ccsds/cdm_kvn.hpp"
+#include "evade/ccsds/cdm_xml.hpp"
 
 namespace evade::commands {
 namespace {
@@ -22,8 +22,8 @@ double now_utc_j2000_s() {
   return unix_s - 946728000.0;  // 2000-01-01T12:00:00 UTC in Unix seconds
 }
 
-assessment::EventCdmOptions cdm_base_options(const ScreenCdmOptions& o, const ScreenCdmRun& run) {
-  assessment::EventCdmOptions opt;
+commands::EventCdmOptions cdm_base_options(const ScreenCdmOptions& o, const ScreenCdmRun& run) {
+  commands::EventCdmOptions opt;
   opt.creation_utc_j2000_s = o.creation_utc_j2000_s ? *o.creation_utc_j2000_s : now_utc_j2000_s();
   opt.hbr_m = o.hbr_m;
   opt.assess = o.assess;
@@ -34,7 +34,7 @@ assessment::EventCdmOptions cdm_base_options(const ScreenCdmOptions& o, const Sc
 
 // The run's fields and the covariance of one event (its TCA already in UTC).
 void complete_event(const ScreenCdmOptions& o, const ScreenCdmRun& run,
-                    const std::optional<Mat6>& cov, assessment::ScreeningEvent& ev) {
+                    const std::optional<Mat6>& cov, commands::ScreeningEvent& ev) {
   for (auto& ob : ev.obj) {
     ob.cov_rtn = cov;
     if (cov) ob.cov_comment = "assumed covariance (--cov-rtn-sigma-m " + o.cov_rtn_sigma_text +
@@ -46,21 +46,21 @@ void complete_event(const ScreenCdmOptions& o, const ScreenCdmRun& run,
   ev.screen_threshold_m = run.threshold_m;
 }
 
-ScreenCdmFile one_message(const ScreenCdmOptions& o, const assessment::ScreeningEvent& ev, bool cov,
-                          const assessment::EventCdmOptions& base, std::set<std::string>& used) {
-  std::string stem = assessment::cdm_event_file_stem(ev);
-  for (int k = 2; !used.insert(stem).second; ++k) stem = assessment::cdm_event_file_stem(ev) + "-" + std::to_string(k);
-  assessment::EventCdmOptions opt = base;
+ScreenCdmFile one_message(const ScreenCdmOptions& o, const commands::ScreeningEvent& ev, bool cov,
+                          const commands::EventCdmOptions& base, std::set<std::string>& used) {
+  std::string stem = commands::cdm_event_file_stem(ev);
+  for (int k = 2; !used.insert(stem).second; ++k) stem = commands::cdm_event_file_stem(ev) + "-" + std::to_string(k);
+  commands::EventCdmOptions opt = base;
   opt.message_id = stem;
   if (opt.hbr_m <= 0.0) opt.hbr_m = ev.obj[0].radius_m + ev.obj[1].radius_m;
   if (cov && !(opt.hbr_m > 0.0))
     throw std::invalid_argument("--cov-rtn-sigma-m: the objects " + ev.obj[0].designator + " and " +
                                 ev.obj[1].designator + " have no size: give --hbr-m");
-  const assessment::EventCdm m = assessment::cdm_from_event(ev, opt);
+  const commands::EventCdm m = commands::cdm_from_event(ev, opt);
   ScreenCdmFile f;
   f.path = (std::filesystem::path(o.dir) / (stem + (o.format == "xml" ? ".xml" : ".cdm"))).string();
   f.message_id = stem;
-  f.text = o.format == "xml" ? assessment::write_cdm_xml(m.cdm) : assessment::write_cdm_kvn(m.cdm);
+  f.text = o.format == "xml" ? ccsds::write_cdm_xml(m.cdm) : ccsds::write_cdm_kvn(m.cdm);
   f.pc = m.pc;
   if (m.pc) f.pc_method = m.pc_method;
   return f;
@@ -101,7 +101,7 @@ void check_screen_cdm_options(const ScreenCdmOptions& o, bool objects_have_radii
 }
 
 ScreenCdms screen_event_cdms(const ScreenCdmOptions& o, const ScreenCdmRun& run,
-                             std::vector<assessment::ScreeningEvent> events) {
+                             std::vector<commands::ScreeningEvent> events) {
   ScreenCdms out;
   out.dir = o.dir;
   out.format = o.format;
@@ -109,9 +109,9 @@ ScreenCdms screen_event_cdms(const ScreenCdmOptions& o, const ScreenCdmRun& run,
                                                 : "assumed RTN sigmas " + o.cov_rtn_sigma_text + " m";
   const std::optional<Mat6> cov = assumed_rtn_covariance(o);
   out.covariance_known = cov.has_value();
-  const assessment::EventCdmOptions base = cdm_base_options(o, run);
+  const commands::EventCdmOptions base = cdm_base_options(o, run);
   std::set<std::string> used;
-  for (assessment::ScreeningEvent& ev : events) {
+  for (commands::ScreeningEvent& ev : events) {
     complete_event(o, run, cov, ev);
     ScreenCdmFile f = one_message(o, ev, cov.has_value(), base, used);
     if (o.sink) {

@@ -9,8 +9,8 @@
 
 namespace evade::commands {
 
-using assessment::EventObject;
-using assessment::ScreeningEvent;
+using commands::EventObject;
+using commands::ScreeningEvent;
 
 std::string ccsds_international_designator(const std::string& id) {
   if (id.size() >= 6 && id[2] != '-' && std::isdigit(static_cast<unsigned char>(id[0])) &&

@@ -5,6 +5,7 @@
 
 #include "evade/assessment/assess.hpp"
 #include "evade/assessment/covariance.hpp"
+#include "evade/ccsds/cdm_formats.hpp"
 #include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
@@ -131,7 +132,7 @@ TEST(MonteCarloPc, CountsEntriesIntoTheSphereWithinTheWindow) {
   std::ifstream in(EVADE_TEST_ALFANO_DIR "/AlfanoTestCase09.cdm");
   std::stringstream ss;
   ss << in.rdbuf();
-  const ConjunctionInput c = conjunction_from_cdm(read_cdm_text(ss.str()), 6.0, kEarthDefault);
+  const ConjunctionInput c = conjunction_from_cdm(ccsds::read_cdm_text(ss.str()), 6.0, kEarthDefault);
   const McEncounter e{c.obj[0].state, c.obj[1].state, c.obj[0].cov_eci, c.obj[1].cov_eci, 6.0,
                       kEarthDefault};
   MonteCarloOptions o;

@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/assessment/assess.hpp"
-#include "evade/assessment/cdm.hpp"
+#include "evade/ccsds/cdm.hpp"
 #include "evade/assessment/pc_method_choice.hpp"
 #include "evade/config/scenario.hpp"
 
@@ -34,7 +34,7 @@ struct AssessRequest {
   /// the encounter plane given directly (no states: no TCA, covariance or short-term checks).
   std::optional<assessment::PrincipalEncounter> encounter_plane;
   double plane_hbr_m = 0.0;    ///< hard-body radius with encounter_plane [m]
-  std::optional<assessment::Cdm> cdm;      ///< the message the states came from: its own figures reported
+  std::optional<ccsds::Cdm> cdm;      ///< the message the states came from: its own figures reported
   long mc_samples = 0;         ///< Monte Carlo samples (states only); 0: no Monte Carlo
   std::uint64_t mc_seed = 1;   ///< Monte Carlo seed
   assessment::McExecution mc_exec;         ///< how a Monte Carlo runs (threads; MPI ranks)

@@ -6,17 +6,15 @@
 #pragma once
 
 #include "evade/assessment/assess.hpp"
-#include "evade/assessment/cdm.hpp"
+#include "evade/ccsds/cdm.hpp"
 #include "evade/config/scenario.hpp"
 
 namespace evade::commands {
 
-/// A CDM in KVN or XML form (XML when the first non-blank character is '<'). Throws CdmError.
-assessment::Cdm read_cdm_text(const std::string& text);
-
 /// Throws config::ConfigError naming the key.
 assessment::ConjunctionInput read_conjunction_scenario(const config::Scenario& sc);
 /// hbr_m <= 0: from AREA_PC of both objects, else std::invalid_argument.
-assessment::ConjunctionInput conjunction_from_cdm(const assessment::Cdm& cdm, double hbr_m, const EarthModel& earth);
+assessment::ConjunctionInput conjunction_from_cdm(const ccsds::Cdm& cdm, double hbr_m,
+                                                  const EarthModel& earth);
 
 }  // namespace evade::commands

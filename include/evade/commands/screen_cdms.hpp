@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evade/assessment/cdm_from_event.hpp"
+#include "evade/commands/cdm_from_event.hpp"
 #include "evade/core/state.hpp"
 
 namespace evade::commands {
@@ -82,7 +82,7 @@ struct ScreenCdms {
 /// std::invalid_argument for a covariance without a hard-body radius (objects without size
 /// and no --hbr-m) and whatever cdm_from_event refuses.
 ScreenCdms screen_event_cdms(const ScreenCdmOptions& o, const ScreenCdmRun& run,
-                             std::vector<assessment::ScreeningEvent> events);
+                             std::vector<commands::ScreeningEvent> events);
 
 /// {dir, format, count, covariance, files: [{file, message_id, pc}]}.
 nlohmann::json to_json(const ScreenCdms& c);

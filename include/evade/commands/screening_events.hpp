@@ -1,4 +1,4 @@
-// The events of a screening as assessment::ScreeningEvent, the input of one CCSDS CDM each
+// The events of a screening as commands::ScreeningEvent, the input of one CCSDS CDM each
 // (assessment/screen_cdms.hpp; CCSDS 508.0-B-1): both objects named and their states at the
 // TCA in EME2000.
 //   Objects (scenario, CSV, synthetic population): the states of event_states (two-body
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "evade/assessment/cdm_from_event.hpp"
+#include "evade/commands/cdm_from_event.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/conjunction/sgp4_motion.hpp"
 #include "evade/conjunction/types.hpp"
@@ -23,13 +23,13 @@
 namespace evade::commands {
 
 /// Events of objects with states at t = 0 (so: the options of the screening, its force model).
-std::vector<assessment::ScreeningEvent> object_screening_events(
+std::vector<commands::ScreeningEvent> object_screening_events(
     const std::vector<conjunction::Conjunction>& events, const std::vector<conjunction::SpaceObject>& objects,
     const conjunction::ScreenOptions& so, double epoch_utc_j2000_s);
 
 /// Events of an SGP4 catalog screening (s: the screening, elements: the catalog's element
 /// sets, for names and international designators).
-std::vector<assessment::ScreeningEvent> catalog_screening_events(
+std::vector<commands::ScreeningEvent> catalog_screening_events(
     const std::vector<conjunction::Conjunction>& events, const conjunction::Sgp4Screening& s,
     const std::vector<sgp4::MeanElements>& elements, const conjunction::ScreenOptions& so);
 

@@ -10,15 +10,17 @@
 #include <string>
 
 #include "evade/assessment/assess.hpp"
-#include "evade/assessment/cdm_from_event.hpp"
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
+#include "evade/commands/cdm_from_event.hpp"
+#include "evade/ccsds/cdm_kvn.hpp"
+#include "evade/ccsds/cdm_xml.hpp"
 #include "evade/commands/conjunction_input.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/core/epoch.hpp"
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::ccsds;
 
 using namespace evade::commands;
 

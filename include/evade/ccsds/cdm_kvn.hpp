@@ -6,12 +6,12 @@
 
 #include <string>
 
-#include "evade/assessment/cdm.hpp"
+#include "evade/ccsds/cdm.hpp"
 
-namespace evade::assessment {
+namespace evade::ccsds {
 
 /// Parses and validates (validate_cdm). Throws CdmError.
 Cdm read_cdm_kvn(const std::string& text);
 std::string write_cdm_kvn(const Cdm& cdm);
 
-}  // namespace evade::assessment
+}  // namespace evade::ccsds

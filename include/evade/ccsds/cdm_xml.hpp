@@ -9,11 +9,11 @@
 
 #include <string>
 
-#include "evade/assessment/cdm.hpp"
+#include "evade/ccsds/cdm.hpp"
 
-namespace evade::assessment {
+namespace evade::ccsds {
 
 Cdm read_cdm_xml(const std::string& text);
 std::string write_cdm_xml(const Cdm& cdm);
 
-}  // namespace evade::assessment
+}  // namespace evade::ccsds

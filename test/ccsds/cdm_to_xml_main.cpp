@@ -3,8 +3,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
+#include "evade/ccsds/cdm_kvn.hpp"
+#include "evade/ccsds/cdm_xml.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {
@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
   std::ifstream in(argv[1]);
   std::ostringstream os;
   os << in.rdbuf();
-  std::ofstream(argv[2]) << evade::assessment::write_cdm_xml(
-      evade::assessment::read_cdm_kvn(os.str()));
+  std::ofstream(argv[2]) << evade::ccsds::write_cdm_xml(
+      evade::ccsds::read_cdm_kvn(os.str()));
   return 0;
 }

@@ -1,5 +1,5 @@
-// CDM XML reader and writer (include/evade/assessment/cdm_xml.hpp).
-#include "evade/assessment/cdm_xml.hpp"
+// CDM XML reader and writer (include/evade/ccsds/cdm_xml.hpp).
+#include "evade/ccsds/cdm_xml.hpp"
 
 #include <cctype>
 #include <map>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <vector>
 
-namespace evade::assessment {
+namespace evade::ccsds {
 namespace {
 
 struct Node {
@@ -264,4 +264,4 @@ std::string write_cdm_xml(const Cdm& cdm) {
   return os.str();
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::ccsds

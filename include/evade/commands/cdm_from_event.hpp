@@ -28,10 +28,10 @@
 #include <string>
 
 #include "evade/assessment/assess_params.hpp"
-#include "evade/assessment/cdm.hpp"
+#include "evade/ccsds/cdm.hpp"
 #include "evade/core/state.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 
 struct EventObject {
   std::string designator;                ///< OBJECT_DESIGNATOR (NORAD id, population name)
@@ -61,12 +61,12 @@ struct EventCdmOptions {
   double creation_utc_j2000_s = 0.0;     ///< CREATION_DATE
   double hbr_m = 0.0;                    ///< hard-body radius for the Pc (> 0 with covariances)
   std::string hbr_source;                ///< said in the COMMENT ("sum of the object radii")
-  AssessConfig assess;                   ///< the Pc method choice (pc_method_choice.hpp)
+  assessment::AssessConfig assess;                   ///< the Pc method choice (pc_method_choice.hpp)
   std::string header_comment;            ///< optional header COMMENT (e.g. the objects' source)
 };
 
 struct EventCdm {
-  Cdm cdm;
+  ccsds::Cdm cdm;
   std::optional<double> pc;  ///< the COLLISION_PROBABILITY written, when covariances are known
   std::string pc_method;     ///< the method that gave it: "2d", "3d_nc" or "mc"
 };
@@ -83,4 +83,4 @@ std::string cdm_epoch(double utc_j2000_s);
 /// (characters other than letters, digits, '-' and '.' replaced by '_').
 std::string cdm_event_file_stem(const ScreeningEvent& ev);
 
-}  // namespace evade::assessment
+}  // namespace evade::commands

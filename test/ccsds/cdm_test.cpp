@@ -8,12 +8,14 @@
 #include <string>
 
 #include "evade/assessment/assess.hpp"
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
+#include "evade/ccsds/cdm_kvn.hpp"
+#include "evade/ccsds/cdm_xml.hpp"
 #include "evade/assessment/covariance.hpp"
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::ccsds;
 
 std::string shipped() {
   std::ifstream in(std::string(EVADE_TEST_CDM_DIR) + "/alfano-2009-case01.cdm");

@@ -1,7 +1,7 @@
-// CDM model, keyword tables and checks (include/evade/assessment/cdm.hpp; CCSDS 508.0-B-1
+// CDM model, keyword tables and checks (include/evade/ccsds/cdm.hpp; CCSDS 508.0-B-1
 // tables 3-2 header, 3-3 relative metadata/data, 3-4 object metadata, 3-5 OD and additional
 // parameters, state vector, 3-6 covariance).
-#include "evade/assessment/cdm.hpp"
+#include "evade/ccsds/cdm.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -15,7 +15,7 @@
 
 #include "evade/core/epoch.hpp"
 
-namespace evade::assessment {
+namespace evade::ccsds {
 namespace {
 
 enum class Kind { kText, kNumber, kEpoch };
@@ -514,4 +514,4 @@ std::vector<std::string> cdm_covariance_notes(const Cdm& c) {
   return notes;
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::ccsds

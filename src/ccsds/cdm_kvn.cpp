@@ -1,9 +1,9 @@
-// CDM KVN reader and writer (include/evade/assessment/cdm_kvn.hpp).
-#include "evade/assessment/cdm_kvn.hpp"
+// CDM KVN reader and writer (include/evade/ccsds/cdm_kvn.hpp).
+#include "evade/ccsds/cdm_kvn.hpp"
 
 #include <sstream>
 
-namespace evade::assessment {
+namespace evade::ccsds {
 namespace {
 
 std::string trim(const std::string& s) {
@@ -128,4 +128,4 @@ std::string write_cdm_kvn(const Cdm& cdm) {
   return os.str();
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::ccsds

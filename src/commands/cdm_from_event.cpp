@@ -1,8 +1,8 @@
-// A screening event as a CCSDS 508.0-B-1 CDM (include/evade/assessment/cdm_from_event.hpp
+// A screening event as a CCSDS 508.0-B-1 CDM (include/evade/commands/cdm_from_event.hpp
 // gives the keywords written and the sources: CCSDS 508.0-B-1 tables 3-2 to 3-6; the Pc is
 // the recommended one of pc_method_choice.hpp: Foster & Estes 1992 unless its usage checks
 // fail).
-#include "evade/assessment/cdm_from_event.hpp"
+#include "evade/commands/cdm_from_event.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -16,7 +16,7 @@
 #include "evade/core/epoch.hpp"
 #include "evade/core/frames.hpp"
 
-namespace evade::assessment {
+namespace evade::commands {
 namespace {
 
 std::string fmt(const char* f, double v) {
@@ -29,11 +29,11 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
-void add(CdmSection& s, const std::string& key, const std::string& value,
+void add(ccsds::CdmSection& s, const std::string& key, const std::string& value,
          const std::string& unit = "") {
   s.items.push_back({key, value, unit, 0});
 }
-void add_comment(CdmSection& s, const std::string& text) {
+void add_comment(ccsds::CdmSection& s, const std::string& text) {
   if (!text.empty()) s.items.push_back({"COMMENT", text, "", 0});
 }
 
@@ -48,7 +48,7 @@ void check_cov(const Mat6& c, const std::string& who) {
                                 ": RTN covariance is not finite and symmetric");
 }
 
-void metadata(CdmSection& m, const EventObject& o, int i) {
+void metadata(ccsds::CdmSection& m, const EventObject& o, int i) {
   add_comment(m, o.state_comment);
   add(m, "OBJECT", i == 0 ? "OBJECT1" : "OBJECT2");
   add(m, "OBJECT_DESIGNATOR", o.designator);
@@ -63,14 +63,14 @@ void metadata(CdmSection& m, const EventObject& o, int i) {
   add(m, "REF_FRAME", "EME2000");
 }
 
-void state_vector(CdmSection& s, const StateEci& x) {
+void state_vector(ccsds::CdmSection& s, const StateEci& x) {
   const char* pk[3] = {"X", "Y", "Z"};
   const char* vk[3] = {"X_DOT", "Y_DOT", "Z_DOT"};
   for (int k = 0; k < 3; ++k) add(s, pk[k], fmt("%.9f", x.r_eci_m(k) * 1e-3), "km");
   for (int k = 0; k < 3; ++k) add(s, vk[k], fmt("%.12f", x.v_eci_mps(k) * 1e-3), "km/s");
 }
 
-void covariance(CdmSection& s, const EventObject& o) {
+void covariance(ccsds::CdmSection& s, const EventObject& o) {
   if (o.cov_rtn) {
     add_comment(s, o.cov_comment);
   } else {
@@ -78,16 +78,16 @@ void covariance(CdmSection& s, const EventObject& o) {
                    "as 0; this is not a covariance and no collision probability is given");
   }
   const Mat6 c = o.cov_rtn ? *o.cov_rtn : Mat6::Zero();
-  const auto& keys = cdm_section_keywords(CdmSectionId::kCovariance);
+  const auto& keys = ccsds::cdm_section_keywords(ccsds::CdmSectionId::kCovariance);
   for (Eigen::Index r = 0; r < 6; ++r) {
     for (Eigen::Index k = 0; k <= r; ++k) {
       const std::string& key = keys[static_cast<std::size_t>(r * (r + 1) / 2 + k)];
-      add(s, key, fmt("%.15e", c(r, k)), cdm_keyword_unit(key));
+      add(s, key, fmt("%.15e", c(r, k)), ccsds::cdm_keyword_unit(key));
     }
   }
 }
 
-void relative(CdmSection& s, const ScreeningEvent& ev) {
+void relative(ccsds::CdmSection& s, const ScreeningEvent& ev) {
   add(s, "TCA", cdm_epoch(ev.tca_utc_j2000_s));
   add(s, "MISS_DISTANCE", fmt("%.6f", ev.miss_m), "m");
   add(s, "RELATIVE_SPEED", fmt("%.6f", ev.rel_speed_mps), "m/s");
@@ -114,21 +114,21 @@ void relative(CdmSection& s, const ScreeningEvent& ev) {
 
 // The recommended Pc of the event (pc_method_choice.hpp: 2D unless its usage checks fail)
 // from the RTN covariances rotated to EME2000, at the event's TCA.
-PcChoice event_pc(const ScreeningEvent& ev, const EventCdmOptions& opt) {
-  ConjunctionInput in;
+assessment::PcChoice event_pc(const ScreeningEvent& ev, const EventCdmOptions& opt) {
+  assessment::ConjunctionInput in;
   in.hbr_m = opt.hbr_m;
   for (int i = 0; i < 2; ++i) {
     const auto& cov_rtn = ev.obj[i].cov_rtn;
     if (!cov_rtn) throw std::invalid_argument("CDM from event: the Pc needs both covariances");
     in.obj[i].name = ev.obj[i].name;
     in.obj[i].state = ev.obj[i].state_eme2000;
-    in.obj[i].cov_eci = cov_eci_from_rtn(*cov_rtn, in.obj[i].state);
+    in.obj[i].cov_eci = assessment::cov_eci_from_rtn(*cov_rtn, in.obj[i].state);
     in.obj[i].has_velocity_cov = true;
   }
-  AssessConfig cfg = opt.assess;
+  assessment::AssessConfig cfg = opt.assess;
   cfg.tca_search_s = 0.0;  // the screener's TCA
-  const Assessment a = assess(in, cfg);
-  return choose_pc(a, in.hbr_m, cfg, in.earth, true);
+  const assessment::Assessment a = assessment::assess(in, cfg);
+  return assessment::choose_pc(a, in.hbr_m, cfg, in.earth, true);
 }
 
 // The CCSDS name of a method (SANA's Pc-method codes where one exists).
@@ -186,13 +186,13 @@ EventCdm cdm_from_event(const ScreeningEvent& ev, const EventCdmOptions& opt) {
   const bool cov_known = ev.obj[0].cov_rtn.has_value() && ev.obj[1].cov_rtn.has_value();
   check_event(ev, opt, cov_known);
   EventCdm out;
-  Cdm& c = out.cdm;
+  ccsds::Cdm& c = out.cdm;
   add(c.header, "CCSDS_CDM_VERS", "1.0");
   add_comment(c.header, opt.header_comment);
   add(c.header, "CREATION_DATE", cdm_epoch(opt.creation_utc_j2000_s));
   add(c.header, "ORIGINATOR", opt.originator);
   add(c.header, "MESSAGE_ID", opt.message_id.empty() ? cdm_event_file_stem(ev) : opt.message_id);
-  std::optional<PcChoice> pc;
+  std::optional<assessment::PcChoice> pc;
   if (cov_known) {
     pc = event_pc(ev, opt);
     add_comment(c.relative, "hard-body radius for COLLISION_PROBABILITY: " +
@@ -209,15 +209,15 @@ EventCdm cdm_from_event(const ScreeningEvent& ev, const EventCdmOptions& opt) {
   }
   for (int i = 0; i < 2; ++i) {
     const EventObject& o = ev.obj[i];
-    CdmObject& co = c.object[i];
+    ccsds::CdmObject& co = c.object[i];
     metadata(co.metadata, o, i);
     if (o.radius_m > 0.0)
       add(co.additional_parameters, "AREA_PC", fmt("%.15e", kPi * o.radius_m * o.radius_m), "m**2");
     state_vector(co.state_vector, o.state_eme2000);
     covariance(co.covariance, o);
   }
-  validate_cdm(c);
+  ccsds::validate_cdm(c);
   return out;
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::commands

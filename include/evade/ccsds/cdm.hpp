@@ -20,7 +20,7 @@
 
 #include "evade/core/state.hpp"
 
-namespace evade::assessment {
+namespace evade::ccsds {
 
 /// A malformed or incomplete CDM: "CDM line L: keyword 'K': <what was expected>".
 class CdmError : public std::invalid_argument {
@@ -90,4 +90,4 @@ std::vector<std::string> cdm_covariance_notes(const Cdm& cdm);
 /// A keyword's value (empty when absent).
 std::string cdm_value(const CdmSection& s, const std::string& key);
 
-}  // namespace evade::assessment
+}  // namespace evade::ccsds
