@@ -33,7 +33,7 @@ FORBIDDEN_FOR_NODE = "sim"
 # The modules that hold physics: none may reach the scenario reader (config) or a YAML or
 # JSON library, directly or through what it links.
 PHYSICS = ("dynamics", "sgp4", "conjunction", "threat", "formation", "observability", "sim",
-           "assessment", "guidance")
+           "assessment", "cam", "guidance")
 FORBIDDEN_FOR_PHYSICS = "config"
 # Third-party libraries a physics module must not link: a link item naming one of these.
 FORBIDDEN_THIRDPARTY = ("yaml-cpp", "nlohmann_json")

@@ -7,7 +7,7 @@
 
 #include "cli.hpp"
 #include "evade/assessment/assess_params.hpp"
-#include "evade/assessment/cam_params.hpp"
+#include "evade/cam/cam_params.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
@@ -79,7 +79,7 @@ std::string formation_to_cam_sections() {
   md += section("Conjunction assessment", "`evade assess`",
                 "assessment.", assessment::assess_params());
   md += section("Collision-avoidance manoeuvre", "`evade plan cam`", "cam.",
-                assessment::cam_params());
+                cam::cam_params());
   return md;
 }
 

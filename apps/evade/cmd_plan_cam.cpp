@@ -19,7 +19,7 @@
 #include "evade/config/json_values.hpp"
 #include "number_list.hpp"
 #include "plan_output.hpp"
-#include "evade/assessment/cam_burn_plan.hpp"
+#include "evade/cam/cam_burn_plan.hpp"
 #include "evade/commands/plan_cam_command.hpp"
 
 namespace evade::cli {
@@ -27,6 +27,7 @@ namespace {
 namespace cmd_plan_cam {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::assessment;
+using namespace evade::cam;
 using namespace evade::commands;
 
 struct Options {

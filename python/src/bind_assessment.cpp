@@ -26,7 +26,7 @@
 
 #include "bind_common.hpp"
 #include "evade/commands/assess_command.hpp"
-#include "evade/assessment/cam_burn_plan.hpp"
+#include "evade/cam/cam_burn_plan.hpp"
 #include "evade/ccsds/cdm.hpp"
 #include "evade/ccsds/cdm_kvn.hpp"
 #include "evade/ccsds/cdm_xml.hpp"
@@ -39,6 +39,7 @@ namespace evade::python {
 namespace {
 
 using namespace evade::assessment;
+using namespace evade::cam;
 using namespace evade::commands;
 using namespace evade::ccsds;
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "evade/assessment/cam_burn_plan.hpp"
+#include "evade/cam/cam_burn_plan.hpp"
 #include "evade/ccsds/cdm_formats.hpp"
 #include "evade/commands/conjunction_input.hpp"
 #include "evade/config/json_values.hpp"
@@ -18,11 +18,11 @@ namespace {
 
 void read_tables(const config::Scenario& sc, PlanCamRequest* r) {
   config::read_params(sc, "assessment.", assessment::assess_params(), &r->assess_config);
-  config::read_params(sc, "cam.", assessment::cam_params(), &r->cam_config);
+  config::read_params(sc, "cam.", cam::cam_params(), &r->cam_config);
 }
 
 // The sweep's lead times; both ends checked as a single plan's lead would be.
-std::vector<double> sweep_leads(const CamLeadSweep& s, const assessment::CamRequest& req, const assessment::CamConfig& cfg) {
+std::vector<double> sweep_leads(const CamLeadSweep& s, const cam::CamRequest& req, const cam::CamConfig& cfg) {
   if (!(s.count >= 1 && s.count <= 10000) || !(s.first_lead_s <= s.last_lead_s))
     throw std::invalid_argument("lead sweep: expected first <= last and count in [1, 10000], found " +
                                 std::to_string(s.first_lead_s) + ", " +
@@ -30,9 +30,9 @@ std::vector<double> sweep_leads(const CamLeadSweep& s, const assessment::CamRequ
   const double a = s.first_lead_s, b = s.last_lead_s;
   const int n = s.count;
   for (const double lead : {a, b}) {
-    assessment::CamRequest r = req;
+    cam::CamRequest r = req;
     r.lead_s = lead;
-    assessment::validate_cam_request(r, cfg);
+    cam::validate_cam_request(r, cfg);
   }
   std::vector<double> leads;
   leads.reserve(static_cast<std::size_t>(n));
@@ -40,11 +40,11 @@ std::vector<double> sweep_leads(const CamLeadSweep& s, const assessment::CamRequ
   return leads;
 }
 
-nlohmann::json outcome_json(const assessment::EncounterOutcome& e) {
+nlohmann::json outcome_json(const cam::EncounterOutcome& e) {
   return {{"pc", e.pc}, {"miss_m", e.miss_m}, {"tca_s", e.tca_s}, {"rel_speed_mps", e.rel_speed_mps}};
 }
 
-std::optional<double> burn_utc(const std::optional<double>& epoch_utc_j2000_s, const assessment::CamPlan& p) {
+std::optional<double> burn_utc(const std::optional<double>& epoch_utc_j2000_s, const cam::CamPlan& p) {
   if (!epoch_utc_j2000_s) return std::nullopt;
   return *epoch_utc_j2000_s + p.burn_from_epoch_s;
 }
@@ -53,11 +53,11 @@ std::string utc_text(double t_j2000_s) {
   return format_calendar_utc(calendar_from_seconds_since_j2000(t_j2000_s));
 }
 
-nlohmann::json recommended_json(const assessment::RecommendedPc& r) {
+nlohmann::json recommended_json(const cam::RecommendedPc& r) {
   return {{"pc", r.pc}, {"method", r.method}, {"reason", r.why}};
 }
 
-nlohmann::json plan_json(const assessment::CamPlan& p, const std::optional<double>& epoch_utc_j2000_s) {
+nlohmann::json plan_json(const cam::CamPlan& p, const std::optional<double>& epoch_utc_j2000_s) {
   using config::vec_json;
   nlohmann::json j = {{"maneuver_needed", p.maneuver_needed}, {"lead_s", p.lead_s},
                       {"pc_target", p.pc_target}, {"dv_mps", p.dv_mps},
@@ -87,7 +87,7 @@ nlohmann::json sweep_json(const PlanCamResult& r) {
                       {"min_miss_m", r.request.min_miss_m},
                       {"along_track_only", r.request.along_track_only}};
   j["rows"] = nlohmann::json::array();
-  for (const assessment::CamSweepRow& row : r.sweep)
+  for (const cam::CamSweepRow& row : r.sweep)
     j["rows"].push_back(row.ok ? plan_json(row.plan, r.epoch_utc_j2000_s)
                                : nlohmann::json{{"lead_s", row.lead_s}, {"error", row.error}});
   return j;
@@ -99,8 +99,8 @@ std::string sweep_csv(const PlanCamResult& r) {
       "miss_after_m,tca_shift_s,pc_before_recommended,pc_after_recommended,method_after,"
       "verified_ok,error\n";
   char b[512];
-  for (const assessment::CamSweepRow& row : r.sweep) {
-    const assessment::CamPlan& p = row.plan;
+  for (const cam::CamSweepRow& row : r.sweep) {
+    const cam::CamPlan& p = row.plan;
     if (!row.ok) {
       (void)std::snprintf(b, sizeof b, "%.6g,,,,,,,,,,,,,,\"", row.lead_s);
       t += b + row.error + "\"\n";
@@ -118,7 +118,7 @@ std::string sweep_csv(const PlanCamResult& r) {
   return t;
 }
 
-std::string cam_burn_text(const assessment::CamPlan& p) {
+std::string cam_burn_text(const cam::CamPlan& p) {
   char b[512];
   (void)std::snprintf(b, sizeof b,
                       "  dv RTN [%.6f, %.6f, %.6f] m/s  |dv| %.6f m/s  (the primary's RTN at "
@@ -150,7 +150,7 @@ std::string cam_burn_text(const assessment::CamPlan& p) {
   return t;
 }
 
-std::string plan_text(const PlanCamResult& r, const assessment::CamPlan& p) {
+std::string plan_text(const PlanCamResult& r, const cam::CamPlan& p) {
   char b[256];
   (void)std::snprintf(b, sizeof b, ": burn %.1f s before TCA", p.lead_s);
   std::string t = r.source + b;
@@ -215,14 +215,14 @@ PlanCamResult run_plan_cam(const PlanCamRequest& req) {
   r.request = req.cam;
   r.epoch_utc_j2000_s = req.epoch_utc_j2000_s;
   if (req.sweep) {
-    r.sweep = assessment::sweep_cam_lead(req.conjunction, sweep_leads(*req.sweep, req.cam, req.cam_config),
+    r.sweep = cam::sweep_cam_lead(req.conjunction, sweep_leads(*req.sweep, req.cam, req.cam_config),
                              req.cam, req.assess_config, req.cam_config);
     add_recommended_pc(req, &r);
     return r;
   }
-  r.plan = assessment::plan_cam(req.conjunction, req.cam, req.assess_config, req.cam_config);
+  r.plan = cam::plan_cam(req.conjunction, req.cam, req.assess_config, req.cam_config);
   r.burn_utc_j2000_s = burn_utc(req.epoch_utc_j2000_s, *r.plan);
-  if (r.burn_utc_j2000_s) r.burn_unix_utime_us = assessment::unix_utime_from_j2000(*r.burn_utc_j2000_s);
+  if (r.burn_utc_j2000_s) r.burn_unix_utime_us = cam::unix_utime_from_j2000(*r.burn_utc_j2000_s);
   r.pc_before_recommended = r.plan->before_recommended.pc;
   r.pc_method_before = r.plan->before_recommended.method;
   r.pc_method_reason = r.plan->before_recommended.why;

@@ -19,6 +19,7 @@ namespace evade::assessment {
 namespace {
 
 using namespace evade::commands;
+using namespace evade::cam;
 
 std::string file_text(const std::string& path) {
   std::ifstream in(path);

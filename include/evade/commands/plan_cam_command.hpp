@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evade/assessment/cam_planner.hpp"
+#include "evade/cam/cam_planner.hpp"
 #include "evade/assessment/pc_method_choice.hpp"
 #include "evade/config/scenario.hpp"
 
@@ -33,10 +33,10 @@ struct PlanCamRequest {
   std::string source;             ///< how the result names its input ("scenario NAME", ...)
   assessment::ConjunctionInput conjunction;   ///< both objects' states and covariances
   assessment::AssessConfig assess_config;     ///< the assessment.* parameter table
-  assessment::CamConfig cam_config;           ///< the cam.* parameter table
+  cam::CamConfig cam_config;           ///< the cam.* parameter table
   /// UTC of the given states [s since J2000] (a CDM's TCA); a scenario has none.
   std::optional<double> epoch_utc_j2000_s;
-  assessment::CamRequest cam;                 ///< lead_s, pc_max, min_miss_m, along_track_only
+  cam::CamRequest cam;                 ///< lead_s, pc_max, min_miss_m, along_track_only
   std::optional<CamLeadSweep> sweep;  ///< the trade space over lead times instead of cam.lead_s
 };
 
@@ -52,14 +52,14 @@ PlanCamRequest read_plan_cam_request_cdm(const config::Scenario& sc, const std::
 
 struct PlanCamResult {
   std::string source;
-  assessment::CamRequest request;  ///< as asked (lead_s unused with a sweep)
+  cam::CamRequest request;  ///< as asked (lead_s unused with a sweep)
   std::optional<double> epoch_utc_j2000_s;  ///< UTC of the given states, when known
   /// One lead time: the plan, with the burn's UTC [s since J2000] and as a Unix utime [us]
   /// when the states' UTC is known.
-  std::optional<assessment::CamPlan> plan;
+  std::optional<cam::CamPlan> plan;
   std::optional<double> burn_utc_j2000_s;
   std::optional<std::int64_t> burn_unix_utime_us;
-  std::vector<assessment::CamSweepRow> sweep;  ///< with a sweep request: one row per lead time
+  std::vector<cam::CamSweepRow> sweep;  ///< with a sweep request: one row per lead time
   /// The recommended Pc before the burn (pc_method_choice.hpp) and its method. The planner's
   /// model is the 2D Pc; the need for a burn and its verification use the recommended Pc
   /// (CamPlan::before_recommended, verified_recommended; cam_planner.hpp).

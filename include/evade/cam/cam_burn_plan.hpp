@@ -6,10 +6,10 @@
 
 #include <cstdint>
 
-#include "evade/assessment/cam_planner.hpp"
+#include "evade/cam/cam_planner.hpp"
 #include "evade/core/burn_plan.hpp"
 
-namespace evade::assessment {
+namespace evade::cam {
 
 /// plan_id: the publisher's plan number. Throws std::invalid_argument when the plan has no
 /// burn (maneuver_needed false) or a non-finite Δv.
@@ -19,4 +19,4 @@ BurnPlan make_cam_burn_plan(const CamPlan& plan, std::int64_t plan_id);
 /// seconds, as core/epoch.hpp).
 std::int64_t unix_utime_from_j2000(double t_j2000_s);
 
-}  // namespace evade::assessment
+}  // namespace evade::cam

@@ -43,10 +43,10 @@
 #include <string>
 #include <vector>
 
-#include "evade/assessment/cam_encounter.hpp"
-#include "evade/assessment/cam_params.hpp"
+#include "evade/cam/cam_encounter.hpp"
+#include "evade/cam/cam_params.hpp"
 
-namespace evade::assessment {
+namespace evade::cam {
 
 struct CamRequest {
   double lead_s = 0.0;        ///< burn time before TCA [s]
@@ -86,7 +86,7 @@ void validate_cam_request(const CamRequest& req, const CamConfig& cfg);
 
 /// The plan. Throws std::invalid_argument for a bad request or input (as assess does), and
 /// when the threshold cannot be reached with |dv| <= cam.max_dv_mps (the burn needed named).
-CamPlan plan_cam(const ConjunctionInput& in, const CamRequest& req, const AssessConfig& acfg,
+CamPlan plan_cam(const assessment::ConjunctionInput& in, const CamRequest& req, const assessment::AssessConfig& acfg,
                  const CamConfig& cfg);
 /// The same on an encounter already set up for req.lead_s.
 CamPlan plan_cam(const CamEncounter& enc, const CamRequest& req, const CamConfig& cfg);
@@ -100,8 +100,8 @@ struct CamSweepRow {
 };
 /// plan_cam at each lead (same request otherwise); a lead without a plan gives its error
 /// in its row, the others go on.
-std::vector<CamSweepRow> sweep_cam_lead(const ConjunctionInput& in, const std::vector<double>& leads_s,
-                                        const CamRequest& req, const AssessConfig& acfg,
+std::vector<CamSweepRow> sweep_cam_lead(const assessment::ConjunctionInput& in, const std::vector<double>& leads_s,
+                                        const CamRequest& req, const assessment::AssessConfig& acfg,
                                         const CamConfig& cfg);
 
 /// The smallest burn of one linear model (steps 1 and 2 above) for Pc <= pc_target.
@@ -109,4 +109,4 @@ std::vector<CamSweepRow> sweep_cam_lead(const ConjunctionInput& in, const std::v
 Vec3 solve_cam_model(const CamLinearModel& m, const CamRequest& req, double pc_target,
                      const CamConfig& cfg, std::string* search, int* nlopt_result);
 
-}  // namespace evade::assessment
+}  // namespace evade::cam

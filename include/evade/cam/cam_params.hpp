@@ -4,7 +4,7 @@
 
 #include "evade/core/param.hpp"
 
-namespace evade::assessment {
+namespace evade::cam {
 
 struct CamConfig {
   double max_dv_mps = 1.0;          ///< largest |dv| the planner may use [m/s]
@@ -19,4 +19,4 @@ struct CamConfig {
 
 ParamTable<CamConfig> cam_params() noexcept;
 
-}  // namespace evade::assessment
+}  // namespace evade::cam

@@ -1,7 +1,7 @@
-// Collision-avoidance-manoeuvre planner parameter table (include/evade/assessment/cam_params.hpp).
-#include "evade/assessment/cam_params.hpp"
+// Collision-avoidance-manoeuvre planner parameter table (include/evade/cam/cam_params.hpp).
+#include "evade/cam/cam_params.hpp"
 
-namespace evade::assessment {
+namespace evade::cam {
 namespace {
 
 const Param<CamConfig> kCamRows[] = {
@@ -28,4 +28,4 @@ const Param<CamConfig> kCamRows[] = {
 
 ParamTable<CamConfig> cam_params() noexcept { return make_param_table(kCamRows); }
 
-}  // namespace evade::assessment
+}  // namespace evade::cam

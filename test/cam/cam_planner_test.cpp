@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/assessment/cam_burn_plan.hpp"
-#include "evade/assessment/cam_planner.hpp"
+#include "evade/cam/cam_burn_plan.hpp"
+#include "evade/cam/cam_planner.hpp"
 #include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/covariance_propagation.hpp"
 #include "evade/config/scenario.hpp"
@@ -22,6 +22,7 @@ namespace {
 
 using namespace evade;
 using namespace evade::assessment;
+using namespace evade::cam;
 using namespace evade::commands;
 
 constexpr double kLeadS = 17000.0;  // about 2.9 orbits of the 700 km primary

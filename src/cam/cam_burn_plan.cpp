@@ -1,10 +1,10 @@
-// make_cam_burn_plan (include/evade/assessment/cam_burn_plan.hpp).
-#include "evade/assessment/cam_burn_plan.hpp"
+// make_cam_burn_plan (include/evade/cam/cam_burn_plan.hpp).
+#include "evade/cam/cam_burn_plan.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace evade::assessment {
+namespace evade::cam {
 
 BurnPlan make_cam_burn_plan(const CamPlan& plan, std::int64_t plan_id) {
   if (!plan.maneuver_needed)
@@ -30,4 +30,4 @@ std::int64_t unix_utime_from_j2000(double t_j2000_s) {
   return static_cast<std::int64_t>(us);
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::cam

@@ -30,7 +30,7 @@
 
 #include "evade/assessment/assess.hpp"
 
-namespace evade::assessment {
+namespace evade::cam {
 
 /// A conjunction after (or without) a burn, at its TCA.
 struct EncounterOutcome {
@@ -66,9 +66,9 @@ class CamEncounter {
  public:
   /// Assesses `in` (brought to its TCA by assess) and places the burn lead_s before that TCA.
   /// Throws std::invalid_argument as assess does, or for lead_s not finite or <= 0.
-  CamEncounter(const ConjunctionInput& in, double lead_s, const AssessConfig& cfg);
+  CamEncounter(const assessment::ConjunctionInput& in, double lead_s, const assessment::AssessConfig& cfg);
 
-  const Assessment& assessment() const { return a_; }
+  const assessment::Assessment& assessment() const { return a_; }
   double lead_s() const { return lead_s_; }
   /// The primary at the burn time, before the burn.
   const StateEci& primary_at_burn() const { return burn_state_; }
@@ -89,8 +89,8 @@ class CamEncounter {
   struct Burned;
   Burned propagate_burn(const Vec3& dv_rtn_mps) const;
 
-  Assessment a_;
-  AssessConfig cfg_;
+  assessment::Assessment a_;
+  assessment::AssessConfig cfg_;
   EarthModel earth_;
   double lead_s_ = 0.0;
   double hbr_m_ = 0.0;
@@ -100,4 +100,4 @@ class CamEncounter {
   Mat3 rtn_to_eci_ = Mat3::Identity();
 };
 
-}  // namespace evade::assessment
+}  // namespace evade::cam

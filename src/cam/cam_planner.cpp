@@ -1,6 +1,6 @@
-// The minimum-dv collision-avoidance burn (include/evade/assessment/cam_planner.hpp gives the
+// The minimum-dv collision-avoidance burn (include/evade/cam/cam_planner.hpp gives the
 // method and the sources).
-#include "evade/assessment/cam_planner.hpp"
+#include "evade/cam/cam_planner.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 
 #include "evade/assessment/encounter_plane.hpp"
 
-namespace evade::assessment {
+namespace evade::cam {
 namespace {
 
 using Mat23 = Eigen::Matrix<double, 2, 3>;
@@ -41,31 +41,31 @@ bool feasible(const EncounterOutcome& e, double pc_target, double min_miss_m) {
 
 // The model with the encounter plane held at the reference TCA (step 1).
 struct PlaneModel {
-  Vec2 m0 = Vec2::Zero();  ///< miss point of dv = 0
+  assessment::Vec2 m0 = assessment::Vec2::Zero();  ///< miss point of dv = 0
   Mat23 a = Mat23::Zero(); ///< d miss point / d dv_rtn
-  Mat2 w = Mat2::Identity();  ///< (A A^T)^-1
-  Mat2 cov = Mat2::Identity();
+  assessment::Mat2 w = assessment::Mat2::Identity();  ///< (A A^T)^-1
+  assessment::Mat2 cov = assessment::Mat2::Identity();
   double hbr_m = 0.0, rel_tol = 1e-8;
 
-  double pc(const Vec2& m) const {
-    EncounterPlane ep;
+  double pc(const assessment::Vec2& m) const {
+    assessment::EncounterPlane ep;
     ep.miss_m = m;
     ep.cov_m2 = cov;
-    return pc_2d(principal_axes(ep), hbr_m, rel_tol).pc;
+    return assessment::pc_2d(assessment::principal_axes(ep), hbr_m, rel_tol).pc;
   }
-  double cost(const Vec2& m) const { return (m - m0).dot(w * (m - m0)); }
-  Vec3 burn(const Vec2& m) const { return a.transpose() * (w * (m - m0)); }
+  double cost(const assessment::Vec2& m) const { return (m - m0).dot(w * (m - m0)); }
+  Vec3 burn(const assessment::Vec2& m) const { return a.transpose() * (w * (m - m0)); }
 };
 
 PlaneModel plane_model(const CamLinearModel& m) {
-  const EncounterPlane ep = encounter_plane(m.primary_ref, m.cov1_m2, m.secondary_ref, m.cov2_m2);
+  const assessment::EncounterPlane ep = assessment::encounter_plane(m.primary_ref, m.cov1_m2, m.secondary_ref, m.cov2_m2);
   Mat23 p;
   p.row(0) = ep.axes_eci.row(0);
   p.row(1) = ep.axes_eci.row(2);
   PlaneModel pm;
   pm.a = -p * m.dr_ddv;
   pm.m0 = p * (m.secondary_ref.r_eci_m - m.primary_ref.r_eci_m) - pm.a * m.dv_ref_rtn_mps;
-  const Mat2 aat = pm.a * pm.a.transpose();
+  const assessment::Mat2 aat = pm.a * pm.a.transpose();
   if (!(std::abs(aat.determinant()) > 1e-30 * aat.squaredNorm()))
     throw std::invalid_argument("the burn cannot move the miss point in two directions");
   pm.w = aat.inverse();
@@ -76,7 +76,7 @@ PlaneModel plane_model(const CamLinearModel& m) {
 }
 
 // Smallest radius >= min_miss_m along u where Pc <= p (Pc decreases along the ray).
-double boundary_radius(const PlaneModel& pm, const Vec2& u, double p, double min_miss_m) {
+double boundary_radius(const PlaneModel& pm, const assessment::Vec2& u, double p, double min_miss_m) {
   double lo = min_miss_m;
   if (pm.pc(lo * u) <= p) return lo;
   double hi = std::max(2.0 * lo, std::sqrt(pm.cov.trace()) + pm.hbr_m);
@@ -91,8 +91,8 @@ double boundary_radius(const PlaneModel& pm, const Vec2& u, double p, double min
   return hi;
 }
 
-Vec2 boundary_point(const PlaneModel& pm, double theta, double p, double min_miss_m) {
-  const Vec2 u(std::cos(theta), std::sin(theta));
+assessment::Vec2 boundary_point(const PlaneModel& pm, double theta, double p, double min_miss_m) {
+  const assessment::Vec2 u(std::cos(theta), std::sin(theta));
   return boundary_radius(pm, u, p, min_miss_m) * u;
 }
 
@@ -313,7 +313,7 @@ bool recommended_ok(const EncounterOutcome& e, const RecommendedPc& r, const Cam
 
 CamPlan plan_cam(const CamEncounter& enc, const CamRequest& req, const CamConfig& cfg) {
   validate_cam_request(req, cfg);
-  const Assessment& a = enc.assessment();
+  const assessment::Assessment& a = enc.assessment();
   CamPlan plan;
   plan.lead_s = enc.lead_s();
   plan.tca_from_epoch_s = a.tca_shift_s;
@@ -346,14 +346,14 @@ CamPlan plan_cam(const CamEncounter& enc, const CamRequest& req, const CamConfig
   return plan;
 }
 
-CamPlan plan_cam(const ConjunctionInput& in, const CamRequest& req, const AssessConfig& acfg,
+CamPlan plan_cam(const assessment::ConjunctionInput& in, const CamRequest& req, const assessment::AssessConfig& acfg,
                  const CamConfig& cfg) {
   validate_cam_request(req, cfg);
   return plan_cam(CamEncounter(in, req.lead_s, acfg), req, cfg);
 }
 
-std::vector<CamSweepRow> sweep_cam_lead(const ConjunctionInput& in, const std::vector<double>& leads_s,
-                                        const CamRequest& req, const AssessConfig& acfg,
+std::vector<CamSweepRow> sweep_cam_lead(const assessment::ConjunctionInput& in, const std::vector<double>& leads_s,
+                                        const CamRequest& req, const assessment::AssessConfig& acfg,
                                         const CamConfig& cfg) {
   std::vector<CamSweepRow> rows;
   for (const double lead : leads_s) {
@@ -372,4 +372,4 @@ std::vector<CamSweepRow> sweep_cam_lead(const ConjunctionInput& in, const std::v
   return rows;
 }
 
-}  // namespace evade::assessment
+}  // namespace evade::cam
