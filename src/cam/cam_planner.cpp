@@ -321,7 +321,7 @@ CamPlan plan_cam(const CamEncounter& enc, const CamRequest& req, const CamConfig
   plan.primary_at_burn = enc.primary_at_burn();
   plan.pc_target = req.pc_max * (1.0 - cfg.pc_margin);
   plan.pc_target_2d = plan.pc_target;
-  plan.before = {0.0, a.pc_2d.pc, a.plane.miss_3d_m, a.plane.rel_speed_mps};
+  plan.before = {0.0, assessment::pc_of(a.plane_pc, assessment::PcMethod::k2d), a.plane.miss_3d_m, a.plane.rel_speed_mps};
   plan.before_recommended = enc.recommended_pc_before();
   if (recommended_ok(plan.before, plan.before_recommended, req)) {
     plan.maneuver_needed = false;

@@ -45,12 +45,14 @@ AssessResult run_plane(const AssessRequest& req, const assessment::PrincipalEnco
   AssessResult r;
   r.source = req.source;
   r.hbr_m = req.plane_hbr_m;
-  r.pc_max = assessment::pc_max_alfano(pe, r.hbr_m);
-  r.pc_2d = assessment::pc_2d(pe, r.hbr_m).pc;
-  r.pc_chan = assessment::pc_chan(pe, r.hbr_m);
+  r.plane_pc = assessment::plane_pc_values(pe, r.hbr_m, 1e-8);
+  // The quadrature's error estimate is reported from states only (as it always was).
+  for (assessment::PcValue& v : r.plane_pc) {
+    if (v.method == assessment::PcMethod::k2d) v.figures.clear();
+  }
   r.miss_m = std::hypot(pe.miss_x_m, pe.miss_y_m);
   r.principal = pe;
-  r.pc = r.pc_2d;
+  r.pc = assessment::pc_of(r.plane_pc, assessment::PcMethod::k2d);
   return r;
 }
 
@@ -72,10 +74,7 @@ AssessResult run_states(const AssessRequest& req, const assessment::ConjunctionI
   r.miss_m = a.plane.miss_3d_m;
   r.rel_speed_mps = a.plane.rel_speed_mps;
   r.principal = a.principal;
-  r.pc_2d = a.pc_2d.pc;
-  r.pc_2d_abs_error = a.pc_2d.abs_error;
-  r.pc_chan = a.pc_chan;
-  r.pc_max = a.pc_max;
+  r.plane_pc = a.plane_pc;
   r.pc_mc = a.mc;
   r.states = StatesAtTca{a.at_tca,  a.tca_shift_s, a.tca_method, a.covariance_propagation,
                          a.npd,     a.min_eigenvalue, a.plane,   a.short_term};
@@ -114,10 +113,15 @@ void add_states_json(const StatesAtTca& s, nlohmann::json* j) {
                         {"reason", s.short_term.reason}};
 }
 
+// "pc_<name>" and "pc_<name>_<figure>" of one method (pc_methods.hpp).
+void add_pc_json(const assessment::PcValue& v, nlohmann::json* j) {
+  const std::string key = std::string("pc_") + assessment::pc_method(v.method).name;
+  (*j)[key] = v.pc;
+  for (const assessment::PcFigure& f : v.figures) (*j)[key + "_" + f.name] = f.value;
+}
+
 void add_monte_carlo_json(const assessment::MonteCarloResult& mc, nlohmann::json* j) {
-  (*j)["pc_mc"] = mc.pc;
-  (*j)["pc_mc_low"] = mc.pc_low;
-  (*j)["pc_mc_high"] = mc.pc_high;
+  add_pc_json(assessment::monte_carlo_value(mc), j);
   (*j)["mc"] = {{"samples", mc.samples}, {"hits", mc.hits}, {"window_s", mc.window_s},
                 {"interval", "Wilson 95 %"}, {"stopped_at_target", mc.stopped_at_target},
                 {"motion", mc.j2 ? "two-body + J2" : "two-body"}};
@@ -134,11 +138,14 @@ nlohmann::json usage_json(const std::vector<assessment::UsageFlag>& flags) {
 
 void add_choice_json(const assessment::PcChoice& c, nlohmann::json* j) {
   (*j)["method_reason"] = c.why;
-  (*j)["usage"] = {{"pc_2d", usage_json(c.usage_2d)}};
+  (*j)["usage"] = nlohmann::json::object();
+  for (const assessment::PcStep& s : c.steps) {
+    const assessment::PcMethodRow& row = assessment::pc_method(s.value.method);
+    if (row.check_noun != nullptr) (*j)["usage"][std::string("pc_") + row.name] = usage_json(s.usage);
+    add_pc_json(s.value, j);
+  }
   if (!c.nc3d) return;  // 3x3 covariances: no 3D-Nc
   const assessment::Nc3dResult& n = *c.nc3d;
-  (*j)["pc_3d_nc"] = n.pc;
-  (*j)["usage"]["pc_3d_nc"] = usage_json(c.usage_3d_nc);
   (*j)["nc3d"] = {{"window_s", {n.t_begin_s, n.t_end_s}}, {"t_peak_s", n.t_peak_s},
                   {"converged", n.converged}, {"failure", n.failure},
                   {"rate_evaluations", n.rate_evaluations}, {"pc_small_hbr", n.pc_small_hbr}};
@@ -146,6 +153,37 @@ void add_choice_json(const assessment::PcChoice& c, nlohmann::json* j) {
     (*j)["nc3d"]["segment_s"] = {c.spans->segment_begin_s, c.spans->segment_end_s};
     (*j)["nc3d"]["conjunction_span_s"] = {c.spans->conj_begin_s, c.spans->conj_end_s};
   }
+}
+
+// A step's Pc line: "  Pc 3D-Nc 1.0e-02 over [-2400.0, 2400.0] s about TCA".
+std::string step_pc_line(const assessment::PcChoice& c, const assessment::PcStep& s,
+                         const assessment::PcMethodRow& row) {
+  char b[200];
+  (void)std::snprintf(b, sizeof b, "  Pc %s %.6e", row.label, s.value.pc);
+  std::string t = b;
+  if (s.value.method == assessment::PcMethod::k3dNc && c.nc3d) {
+    (void)std::snprintf(b, sizeof b, " over [%.1f, %.1f] s about TCA", c.nc3d->t_begin_s,
+                        c.nc3d->t_end_s);
+    t += b;
+  }
+  return t + "\n";
+}
+
+// The plane methods' Pc line: "  Pc 2D 3.4e-02  Chan 3.4e-02  max 5.0e-02", or the labels and
+// "undefined" when there is no encounter plane.
+std::string plane_pc_line(const std::vector<assessment::PcValue>& values) {
+  std::string labels, line = "  Pc";
+  bool undefined = false;
+  char b[64];
+  for (const assessment::PcValue& v : values) {
+    const char* label = assessment::pc_method(v.method).label;
+    labels += (labels.empty() ? " " : ", ") + std::string(label);
+    (void)std::snprintf(b, sizeof b, "%s%s %.6e", line.size() > 4 ? "  " : " ", label, v.pc);
+    line += b;
+    undefined = undefined || std::isnan(v.pc);
+  }
+  if (undefined) return "  Pc" + labels + ": undefined (zero relative speed: no encounter plane)\n";
+  return line + "\n";
 }
 
 // The recommended Pc and the checks behind it, for the text output.
@@ -156,20 +194,18 @@ std::string choice_text(const AssessResult& r) {
                       r.choice ? r.choice->why.c_str() : "encounter plane given: 2D only");
   t += b;
   if (!r.choice) return t;
-  auto flags = [&](const char* what, const std::vector<assessment::UsageFlag>& f) {
-    for (const assessment::UsageFlag& u : f) {
-      (void)std::snprintf(b, sizeof b, "    %s %-10s %.4g (limit %.4g)%s: %s\n", what,
+  // Each step with checks: its Pc (unless a plane method, on the Pc line already), then
+  // its checks.
+  for (const assessment::PcStep& s : r.choice->steps) {
+    const assessment::PcMethodRow& row = assessment::pc_method(s.value.method);
+    if (row.check_noun == nullptr) continue;
+    if (row.from_plane == nullptr) t += step_pc_line(*r.choice, s, row);
+    for (const assessment::UsageFlag& u : s.usage) {
+      (void)std::snprintf(b, sizeof b, "    %-5s %-10s %.4g (limit %.4g)%s: %s\n", row.label,
                           u.name.c_str(), u.value, u.threshold, u.violated ? " FAILS" : "",
                           u.meaning.c_str());
       t += b;
     }
-  };
-  flags("2D   ", r.choice->usage_2d);
-  if (r.choice->nc3d) {
-    (void)std::snprintf(b, sizeof b, "  Pc 3D-Nc %.6e over [%.1f, %.1f] s about TCA\n",
-                        r.choice->nc3d->pc, r.choice->nc3d->t_begin_s, r.choice->nc3d->t_end_s);
-    t += b;
-    flags("3D-Nc", r.choice->usage_3d_nc);
   }
   return t;
 }
@@ -239,10 +275,9 @@ AssessResult run_assess(const AssessRequest& req) {
 
 nlohmann::json to_json(const AssessResult& r) {
   nlohmann::json j = {{"source", r.source}, {"hbr_m", r.hbr_m}, {"miss_m", r.miss_m},
-                      {"rel_speed_mps", optional_json(r.rel_speed_mps)}, {"pc_2d", r.pc_2d},
-                      {"pc_chan", r.pc_chan}, {"pc_max", r.pc_max.pc_max},
-                      {"pc_max_scale", r.pc_max.scale}, {"encounter_plane", plane_json(r)}};
-  if (r.pc_2d_abs_error) j["pc_2d_abs_error"] = *r.pc_2d_abs_error;
+                      {"rel_speed_mps", optional_json(r.rel_speed_mps)},
+                      {"encounter_plane", plane_json(r)}};
+  for (const assessment::PcValue& v : r.plane_pc) add_pc_json(v, &j);
   if (r.states) add_states_json(*r.states, &j);
   if (r.pc_mc) {
     add_monte_carlo_json(*r.pc_mc, &j);
@@ -270,13 +305,7 @@ std::string to_text(const AssessResult& r) {
     t += b;
   }
   if (r.cdm) t += "  CDM " + r.cdm->message_id + ": TCA " + r.cdm->tca_utc + " UTC\n";
-  if (std::isnan(r.pc_2d)) {
-    t += "  Pc 2D, Chan, max: undefined (zero relative speed: no encounter plane)\n";
-  } else {
-    (void)std::snprintf(b, sizeof b, "  Pc 2D %.6e  Chan %.6e  max %.6e\n", r.pc_2d, r.pc_chan,
-                        r.pc_max.pc_max);
-    t += b;
-  }
+  t += plane_pc_line(r.plane_pc);
   if (r.pc_mc) {
     (void)std::snprintf(b, sizeof b, "  Pc Monte Carlo %.6e  [%.6e, %.6e]\n", r.pc_mc->pc,
                         r.pc_mc->pc_low, r.pc_mc->pc_high);

@@ -131,11 +131,12 @@ assessment::PcChoice event_pc(const ScreeningEvent& ev, const EventCdmOptions& o
   return assessment::choose_pc(a, in.hbr_m, cfg, in.earth, true);
 }
 
-// The CCSDS name of a method (SANA's Pc-method codes where one exists).
+// The CCSDS name of a recommended method (its row's SANA Pc-method code, pc_methods.hpp).
 const char* pc_method_code(const std::string& method) {
-  if (method == "3d_nc") return "HALL-2021";
-  if (method == "mc") return "ALFANO-2009";
-  return "FOSTER-1992";
+  const assessment::PcMethodRow* row = assessment::pc_method_named(method);
+  if (row == nullptr || row->cdm_code == nullptr)
+    throw std::logic_error("CDM from event: no CCSDS code for the Pc method '" + method + "'");
+  return row->cdm_code;
 }
 
 void check_event(const ScreeningEvent& ev, const EventCdmOptions& opt, bool cov_known) {

@@ -180,9 +180,9 @@ TEST(MonteCarloPc, IntervalContains2dPcForFastEncounter) {
   const Assessment a = assess(in, AssessConfig{}, mc);
   ASSERT_TRUE(a.mc.has_value());
   EXPECT_TRUE(a.short_term.valid) << a.short_term.reason;
-  EXPECT_GT(a.pc_2d.pc, 1e-2);
-  EXPECT_LE(a.mc->pc_low, a.pc_2d.pc);
-  EXPECT_GE(a.mc->pc_high, a.pc_2d.pc);
+  EXPECT_GT(pc_of(a.plane_pc, PcMethod::k2d), 1e-2);
+  EXPECT_LE(a.mc->pc_low, pc_of(a.plane_pc, PcMethod::k2d));
+  EXPECT_GE(a.mc->pc_high, pc_of(a.plane_pc, PcMethod::k2d));
 }
 
 TEST(MonteCarloPc, DepartsFrom2dPcAtLowRelativeSpeed) {
@@ -200,13 +200,13 @@ TEST(MonteCarloPc, DepartsFrom2dPcAtLowRelativeSpeed) {
   mc.samples = 4000;
   mc.seed = 3;
   const Assessment a = assess(in, cfg, mc);
-  EXPECT_NEAR(a.pc_2d.pc, 1.46749549e-01, 1e-3 * 1.46749549e-01);  // CARA Pc2D_Foster
+  EXPECT_NEAR(pc_of(a.plane_pc, PcMethod::k2d), 1.46749549e-01, 1e-3 * 1.46749549e-01);  // CARA Pc2D_Foster
   EXPECT_FALSE(a.short_term.valid);
   EXPECT_FALSE(a.short_term.reason.empty());
   ASSERT_TRUE(a.mc.has_value());
-  EXPECT_TRUE(a.pc_2d.pc < a.mc->pc_low || a.pc_2d.pc > a.mc->pc_high)
-      << "MC [" << a.mc->pc_low << ", " << a.mc->pc_high << "] 2D " << a.pc_2d.pc;
-  std::printf("Alfano case 1: 2D %.6g, MC %.6g [%.6g, %.6g], window %.0f s, %s\n", a.pc_2d.pc,
+  EXPECT_TRUE(pc_of(a.plane_pc, PcMethod::k2d) < a.mc->pc_low || pc_of(a.plane_pc, PcMethod::k2d) > a.mc->pc_high)
+      << "MC [" << a.mc->pc_low << ", " << a.mc->pc_high << "] 2D " << pc_of(a.plane_pc, PcMethod::k2d);
+  std::printf("Alfano case 1: 2D %.6g, MC %.6g [%.6g, %.6g], window %.0f s, %s\n", pc_of(a.plane_pc, PcMethod::k2d),
               a.mc->pc, a.mc->pc_low, a.mc->pc_high, a.mc->window_s, a.short_term.reason.c_str());
 }
 

@@ -66,8 +66,8 @@ Assessment assess_at_tca(const Cdm& c) {
 }
 
 TEST(Cdm, PcOfShippedAlfanoCase01) {
-  EXPECT_NEAR(assess_at_tca(read_cdm_kvn(shipped())).pc_2d.pc, 1.46749549e-01,
-              1e-3 * 1.46749549e-01);
+  const double pc = pc_of(assess_at_tca(read_cdm_kvn(shipped())).plane_pc, PcMethod::k2d);
+  EXPECT_NEAR(pc, 1.46749549e-01, 1e-3 * 1.46749549e-01);
 }
 
 // A negative eigenvalue only in the velocity block (CTDOT_RDOT^2 > CRDOT_RDOT CTDOT_TDOT) is an

@@ -87,7 +87,7 @@ TEST(CdmFromEvent, KvnAndXmlCarryTheEventAndThePc) {
     const ConjunctionInput in = conjunction_from_cdm(c, 0.0, kEarthDefault);
     EXPECT_NEAR(in.hbr_m, 4.5, 1e-12);
     const Assessment a = assess(in, AssessConfig{});
-    EXPECT_NEAR(a.pc_2d.pc, *m.pc, 2e-7 * *m.pc);
+    EXPECT_NEAR(assessment::pc_of(a.plane_pc, assessment::PcMethod::k2d), *m.pc, 2e-7 * *m.pc);
     EXPECT_NEAR(a.tca_shift_s, 0.0, 1e-6);
   }
 }

@@ -65,7 +65,8 @@ struct CdmFigures {
 
 /// What only an assessment from states has.
 struct StatesAtTca {
-  std::array<assessment::ObjectState, 2> at_tca;  ///< states and covariances used (after TCA shift, repair)
+  /// The states and covariances used (after the TCA shift and any repair).
+  std::array<assessment::ObjectState, 2> at_tca;
   double tca_shift_s = 0.0;           ///< TCA minus the epoch of the given states [s]
   std::string tca_method;             ///< how the states were brought to TCA
   std::string covariance_propagation;
@@ -80,30 +81,30 @@ struct AssessResult {
   double hbr_m = 0.0;
   double miss_m = 0.0;                  ///< at TCA (states) or in the plane given [m]
   std::optional<double> rel_speed_mps;  ///< at TCA; none for an encounter plane given directly
-  assessment::PrincipalEncounter principal;         ///< miss and sigmas along the plane's principal axes
-  // The Pc of each method. A further method (e.g. a 3-D Nc or another Monte Carlo) is one
-  // more field here, std::optional when computed on request or only from states, and one
-  // more key in to_json; nothing else changes.
-  double pc_2d = 0.0;
-  std::optional<double> pc_2d_abs_error;  ///< quadrature error estimate (reported from states)
-  double pc_chan = 0.0;
-  assessment::PcMaxResult pc_max;                     ///< Alfano's maximum and its covariance scale
-  std::optional<assessment::MonteCarloResult> pc_mc;  ///< with mc_samples > 0, or run by the escalation
-  double pc = 0.0;              ///< the recommended Pc (pc_method_choice.hpp)
-  std::string method = "2d";    ///< the method that produced it: "2d", "3d_nc" or "mc"
-  std::optional<assessment::PcChoice> choice;  ///< from states: the usage checks, 3D-Nc when it ran
-  int mc_ranks = 1;                ///< MPI ranks the Monte Carlo ran on
-  std::optional<StatesAtTca> states;      ///< from states only
-  std::optional<CdmFigures> cdm;          ///< from a CDM only
+  assessment::PrincipalEncounter principal;  ///< miss and sigmas along the plane's principal axes
+  /// The Pc of every plane method (assessment/pc_methods.hpp), in table order. The escalation's
+  /// steps (3D-Nc, Monte Carlo) are in choice; a new method is a row of the table, and its Pc
+  /// and figures reach the JSON and the text from there.
+  std::vector<assessment::PcValue> plane_pc;
+  /// The Monte Carlo's details: with mc_samples > 0, or run by the escalation.
+  std::optional<assessment::MonteCarloResult> pc_mc;
+  double pc = 0.0;            ///< the recommended Pc (pc_method_choice.hpp)
+  std::string method = "2d";  ///< the method that produced it: "2d", "3d_nc" or "mc"
+  std::optional<assessment::PcChoice> choice;  ///< from states: the steps and their checks
+  int mc_ranks = 1;                   ///< MPI ranks the Monte Carlo ran on
+  std::optional<StatesAtTca> states;  ///< from states only
+  std::optional<CdmFigures> cdm;      ///< from a CDM only
 };
 
 /// Throws std::invalid_argument for bad input (as assess does; Monte Carlo without states;
 /// no encounter given).
 AssessResult run_assess(const AssessRequest& req);
 
-/// The CLI's --json output: miss_m, rel_speed_mps, pc_2d, pc_chan, pc_max, pc_max_scale,
-/// encounter_plane, and from states pc_2d_abs_error, tca, covariance checks, short_term,
-/// pc_mc/mc with Monte Carlo, cdm and notes with a CDM.
+/// The CLI's --json output: miss_m, rel_speed_mps, every method's "pc_<name>" and
+/// "pc_<name>_<figure>" (pc_methods.hpp: pc_2d, pc_chan, pc_max, pc_max_scale; from states
+/// also pc_2d_abs_error, pc_3d_nc, pc_mc with pc_mc_low and pc_mc_high), encounter_plane, and
+/// from states tca, covariance checks, short_term, the usage checks of each escalation step
+/// and the details of 3D-Nc (nc3d) and the Monte Carlo (mc), cdm and notes with a CDM.
 nlohmann::json to_json(const AssessResult& r);
 /// The text output: miss, HBR, every Pc, the short-term verdict, each covariance repair and
 /// each CDM unit note.
