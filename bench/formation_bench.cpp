@@ -4,7 +4,7 @@
 // 32 samples per period) and of one 3.68-day propagation with two burns and 1441 dense-output samples on its own.
 #include <benchmark/benchmark.h>
 
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/commands/formation_scenario.hpp"
 #include "evade/formation/verification.hpp"
 
 namespace {
@@ -15,7 +15,7 @@ using namespace evade::formation;
 const PlanInputs& seed3() {
   static const PlanInputs in = [] {
     const config::Scenario sc = config::Scenario::load("seed3");
-    return read_plan_inputs(sc);
+    return commands::read_plan_inputs(sc);
   }();
   return in;
 }

@@ -17,7 +17,7 @@
 #include "evade/config/scenario.hpp"
 #include "evade/guidance/guidance_law.hpp"
 #include "evade/guidance/los_geometry.hpp"
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_scenario.hpp"
 #include "evade/sim/simulator.hpp"
 
 namespace {
@@ -99,7 +99,7 @@ BENCHMARK(BM_GuidanceStepPercentiles)->Iterations(3)->Unit(benchmark::kMilliseco
 
 void BM_SimSeed0(benchmark::State& state) {
   const evade::sim::SimConfig c =
-      evade::sim::sim_config_from_scenario(evade::config::Scenario::load("seed0"));
+      evade::commands::sim_config_from_scenario(evade::config::Scenario::load("seed0"));
   double miss = 0.0;
   for (auto _ : state) {
     auto ep = evade::sim::make_in_process_endpoint(c.guidance, true);

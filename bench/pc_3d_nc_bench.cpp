@@ -11,7 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/ccsds/cdm_formats.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
 #include "evade/assessment/sphere_quadrature.hpp"
@@ -51,7 +52,7 @@ ConjunctionInput alfano01() {
   if (!in) throw std::runtime_error("cannot open AlfanoTestCase01.cdm");
   std::stringstream ss;
   ss << in.rdbuf();
-  return conjunction_from_cdm(read_cdm_text(ss.str()), 15.0, kEarthDefault);
+  return commands::conjunction_from_cdm(ccsds::read_cdm_text(ss.str()), 15.0, kEarthDefault);
 }
 
 void alfano_case01(benchmark::State& state) {

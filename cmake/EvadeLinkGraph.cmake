@@ -7,7 +7,10 @@
 # EVADE_MODULES and every executable under apps/ exists. One line per target:
 #   module <m>: <direct evade modules it links, public and private>
 #   executable <name>: <direct evade modules it links>
-# plus "apps ON|OFF" (whether apps/ was configured).
+#   thirdparty <m>: <the other libraries module m links directly, public and private>
+# plus "apps ON|OFF" (whether apps/ was configured). The third-party names are the link
+# items as written (nlohmann_json::nlohmann_json, yaml-cpp, NLopt::nlopt), a generator
+# expression's $<LINK_ONLY:...> unwrapped.
 
 set(EVADE_LINK_GRAPH_FILE ${PROJECT_BINARY_DIR}/evade_link_graph.txt)
 
@@ -35,6 +38,31 @@ function(_evade_link_graph_deps target modules out_var)
   list(SORT deps)
   list(JOIN deps " " deps)
   set(${out_var} "${deps}" PARENT_SCOPE)
+endfunction()
+
+# The link items of a target that name no evade module (third-party libraries), each once,
+# sorted: "$<LINK_ONLY:yaml-cpp>" (a static library's private link, in its interface) is
+# yaml-cpp.
+function(_evade_link_graph_thirdparty target out_var)
+  set(items "")
+  foreach(prop LINK_LIBRARIES INTERFACE_LINK_LIBRARIES)
+    get_target_property(v ${target} ${prop})
+    if(v)
+      list(APPEND items ${v})
+    endif()
+  endforeach()
+  set(names "")
+  foreach(item IN LISTS items)
+    string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" item "${item}")
+    if(item MATCHES "evade(::|_)" OR item MATCHES "[$<> ]" OR item STREQUAL "")
+      continue()
+    endif()
+    list(APPEND names ${item})
+  endforeach()
+  list(REMOVE_DUPLICATES names)
+  list(SORT names)
+  list(JOIN names " " names)
+  set(${out_var} "${names}" PARENT_SCOPE)
 endfunction()
 
 # Executable targets defined in `dir` and its subdirectories.
@@ -71,6 +99,10 @@ function(evade_write_link_graph)
   foreach(m IN LISTS modules)
     _evade_link_graph_deps(evade_${m} "${modules}" deps)
     string(APPEND text "module ${m}: ${deps}\n")
+  endforeach()
+  foreach(m IN LISTS modules)
+    _evade_link_graph_thirdparty(evade_${m} names)
+    string(APPEND text "thirdparty ${m}: ${names}\n")
   endforeach()
   if(EVADE_BUILD_APPS)
     _evade_link_graph_executables(${PROJECT_SOURCE_DIR}/apps exes)

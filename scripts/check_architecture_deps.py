@@ -8,14 +8,19 @@ Run by ctest (test/docs/CMakeLists.txt):
 Inputs:
   --graph  the build tree's evade_link_graph.txt, written at configure time by
            cmake/EvadeLinkGraph.cmake: "module <m>: <deps>" and "executable <e>: <deps>"
-           lines giving each target's direct evade:: links (public and private).
+           lines giving each target's direct evade:: links (public and private), and
+           "thirdparty <m>: <libs>" lines giving each module's other direct links.
   --doc    docs/ARCHITECTURE.md. Its module table (columns "module" and "depends on") and
            its executable table (columns "executable" and "links") are compared with the
            graph. In those columns only evade module names count (`evade::` prefix
            optional); third-party names (Eigen, LCM, NLopt, ...) and anything in
            parentheses are ignored; "every module" stands for all modules.
 
-Also asserted: evade_guidance_node links no evade_sim, directly or through other modules.
+Also asserted: evade_guidance_node links no evade_sim, directly or through other modules;
+and no physics module (PHYSICS) depends on evade::config, yaml-cpp or nlohmann-json, directly
+or through the modules it links: a physics module takes typed structs and returns typed
+structs, and the faces that read scenarios and write JSON or text live in evade::commands
+(docs/ARCHITECTURE.md "Physics and faces").
 Exit status 0 when everything matches, 1 with every difference listed otherwise.
 """
 import argparse
@@ -25,10 +30,21 @@ import sys
 NODE = "evade_guidance_node"
 FORBIDDEN_FOR_NODE = "sim"
 
+# The modules that hold physics: none may reach the scenario reader (config) or a YAML or
+# JSON library, directly or through what it links.
+PHYSICS = ("dynamics", "sgp4", "conjunction", "threat", "formation", "observability", "sim",
+           "assessment", "cam", "guidance")
+FORBIDDEN_FOR_PHYSICS = "config"
+# Third-party libraries a physics module must not link: a link item naming one of these.
+FORBIDDEN_THIRDPARTY = ("yaml-cpp", "nlohmann_json")
 
-def read_graph(path):
-    """Returns (apps_on, {module: set(deps)}, {executable: set(deps)})."""
+
+def read_graph(path, thirdparty=None):
+    """Returns (apps_on, {module: set(deps)}, {executable: set(deps)}); fills thirdparty
+    ({module: set(libs)}) when given."""
     modules, executables, apps_on = {}, {}, False
+    if thirdparty is None:
+        thirdparty = {}
     with open(path, encoding="utf-8") as f:
         for raw in f:
             line = raw.strip()
@@ -39,7 +55,8 @@ def read_graph(path):
                 continue
             head, _, deps = line.partition(":")
             kind, _, name = head.partition(" ")
-            target = {"module": modules, "executable": executables}.get(kind)
+            target = {"module": modules, "executable": executables,
+                      "thirdparty": thirdparty}.get(kind)
             if target is None or not name:
                 raise ValueError(f"{path}: cannot read line {raw!r}")
             target[name.strip()] = set(deps.split())
@@ -140,6 +157,51 @@ def node_path_to(graph_modules, start_deps, forbidden):
     return None
 
 
+def forbidden_lib(lib):
+    """The forbidden third-party library a link item names, or None."""
+    for name in FORBIDDEN_THIRDPARTY:
+        if name in lib:
+            return name
+    return None
+
+
+def physics_errors(modules, thirdparty):
+    """Every physics module that reaches evade::config, yaml-cpp or nlohmann-json, with the
+    link path; every PHYSICS name that is not a module."""
+    errors = []
+    for m in PHYSICS:
+        if m not in modules:
+            errors.append(f"physics module '{m}' is not a CMake target (scripts/"
+                          "check_architecture_deps.py PHYSICS names it)")
+            continue
+        path = node_path_to(modules, {m}, FORBIDDEN_FOR_PHYSICS)
+        if path:
+            errors.append(f"physics module '{m}' links evade_{FORBIDDEN_FOR_PHYSICS} (path: "
+                          + " -> ".join(path) + "); its scenario reader and JSON belong in "
+                          "evade::commands")
+        for dep_path in reachable_paths(modules, m):
+            for lib in sorted(thirdparty.get(dep_path[-1], ())):
+                bad = forbidden_lib(lib)
+                if bad:
+                    errors.append(f"physics module '{m}' links {bad} (path: "
+                                  + " -> ".join(dep_path + [lib]) + "); a file format that "
+                                  "needs it belongs in the module of its concept, not in physics")
+    return errors
+
+
+def reachable_paths(modules, start):
+    """[start, ..., m] for start and every module it reaches (the first path found)."""
+    paths, stack = {}, [[start]]
+    while stack:
+        path = stack.pop()
+        if path[-1] in paths:
+            continue
+        paths[path[-1]] = path
+        for d in sorted(modules.get(path[-1], ()), reverse=True):
+            stack.append(path + [d])
+    return [paths[k] for k in sorted(paths)]
+
+
 def compare(kind, doc_rows, truth, universe, doc_name, col):
     errors = []
     for name in sorted(set(truth) - set(doc_rows)):
@@ -162,8 +224,9 @@ def compare(kind, doc_rows, truth, universe, doc_name, col):
     return errors
 
 
-def check(apps_on, modules, executables, doc_text, doc_name="docs/ARCHITECTURE.md"):
-    errors = []
+def check(apps_on, modules, executables, doc_text, doc_name="docs/ARCHITECTURE.md",
+          thirdparty=None):
+    errors = physics_errors(modules, thirdparty or {})
     mod_rows = find_table(doc_text, "module", "depends on")
     if mod_rows is None:
         return [f"{doc_name}: no table with columns 'module' and 'depends on'"]
@@ -204,6 +267,7 @@ def self_test(doc_text):
     cases = []
     mods, exes = copy()
     cases.append(("unaltered", mods, exes, doc_text, None))
+    physics = physics_cases(base_mods, base_exes, doc_text, copy)
     with_dep = sorted(m for m in base_mods if base_mods[m])
     if not with_dep:
         print("self-test: no module in the table has a dependency")
@@ -245,9 +309,10 @@ def self_test(doc_text):
     exes["zz_new_tool"] = set()
     cases.append(("a new executable without a row", mods, exes, doc_text, "'zz_new_tool'"))
 
+    cases = [(n, m, e, t, {}, x) for n, m, e, t, x in cases] + physics
     failed = 0
-    for name, mods, exes, text, expect in cases:
-        errors = check(True, mods, exes, text)
+    for name, mods, exes, text, thirdparty, expect in cases:
+        errors = check(True, mods, exes, text, thirdparty=thirdparty)
         if expect is None:
             ok = not errors
         else:
@@ -260,6 +325,40 @@ def self_test(doc_text):
     return 1 if failed else 0
 
 
+def physics_summary():
+    return (f"{len(PHYSICS)} physics modules ({', '.join(PHYSICS)}) reach no evade_"
+            f"{FORBIDDEN_FOR_PHYSICS}, {' or '.join(FORBIDDEN_THIRDPARTY)}")
+
+
+def physics_cases(base_mods, base_exes, doc_text, copy):
+    """Self-test cases of the physics rule: each alteration must be reported."""
+    cases = []
+    free = [m for m in PHYSICS if m in base_mods]
+    if not free:
+        return cases
+    p = free[0]
+    mods, exes = copy()
+    mods[p].add(FORBIDDEN_FOR_PHYSICS)
+    cases.append((f"physics '{p}' links config", mods, exes, doc_text, {},
+                  f"physics module '{p}' links evade_{FORBIDDEN_FOR_PHYSICS}"))
+    mods, exes = copy()
+    mods["zz_face"] = {FORBIDDEN_FOR_PHYSICS}
+    mods[p].add("zz_face")
+    cases.append((f"physics '{p}' reaches config through another module", mods, exes, doc_text,
+                  {}, f"physics module '{p}' links evade_{FORBIDDEN_FOR_PHYSICS} (path: {p} -> "
+                  "zz_face"))
+    mods, exes = copy()
+    cases.append((f"physics '{p}' links nlohmann_json", mods, exes, doc_text,
+                  {p: {"nlohmann_json::nlohmann_json"}}, f"physics module '{p}' links nlohmann_json"))
+    below = sorted(m for m in base_mods[p])
+    if below:
+        mods, exes = copy()
+        cases.append((f"physics '{p}' reaches yaml-cpp through '{below[0]}'", mods, exes, doc_text,
+                      {below[0]: {"yaml-cpp"}},
+                      f"physics module '{p}' links yaml-cpp (path: {p} -> {below[0]}"))
+    return cases
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--graph", required=True)
@@ -270,8 +369,9 @@ def main():
         doc_text = f.read()
     if args.self_test:
         return self_test(doc_text)
-    apps_on, modules, executables = read_graph(args.graph)
-    errors = check(apps_on, modules, executables, doc_text)
+    thirdparty = {}
+    apps_on, modules, executables = read_graph(args.graph, thirdparty)
+    errors = check(apps_on, modules, executables, doc_text, thirdparty=thirdparty)
     if errors:
         print(f"{args.doc} does not match the CMake link graph ({args.graph}):")
         for e in errors:
@@ -280,10 +380,11 @@ def main():
         return 1
     if apps_on:
         print(f"{args.doc}: {len(modules)} modules and {len(executables)} executables match "
-              f"the CMake link graph; {NODE} does not link evade_{FORBIDDEN_FOR_NODE}")
+              f"the CMake link graph; {NODE} does not link evade_{FORBIDDEN_FOR_NODE}; "
+              f"{physics_summary()}")
     else:
         print(f"{args.doc}: {len(modules)} modules match the CMake link graph (apps not "
-              "configured: executables not checked)")
+              f"configured: executables not checked); {physics_summary()}")
     return 0
 
 

@@ -1,7 +1,7 @@
 // `evade assess`: collision probability of one conjunction (issue 12). The encounter comes
 // from a scenario's `conjunction:` block (--scenario), a CCSDS CDM (--cdm, KVN or XML) or the
 // encounter plane directly (--encounter-plane MISS_X_M,MISS_Y_M,SIGMA_X_M,SIGMA_Y_M,HBR_M).
-// Parses, calls evade::assessment::run_assess (assess_command.hpp) and prints; --json prints
+// Parses, calls evade::commands::run_assess (assess_command.hpp) and prints; --json prints
 // miss_m, rel_speed_mps, pc_2d, pc_chan, pc_max (and pc_mc, pc_mc_low, pc_mc_high with --mc N
 // --seed S), the encounter plane used, how the states were brought to TCA and the short-term
 // validity verdict; with --cdm also the message's own TCA, MISS_DISTANCE, RELATIVE_SPEED and
@@ -19,7 +19,7 @@
 #include "number_list.hpp"
 #include "param_flag_option.hpp"
 #include "evade/config/read_params.hpp"
-#include "evade/assessment/assess_command.hpp"
+#include "evade/commands/assess_command.hpp"
 #include "evade/distributed/distributed_pc_monte_carlo.hpp"
 #include "evade/distributed/mpi_session.hpp"
 
@@ -28,6 +28,7 @@ namespace {
 namespace cmd_assess {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::assessment;
+using namespace evade::commands;
 
 struct Options {
   CommonOptions common;  // --scenario, --set, --json

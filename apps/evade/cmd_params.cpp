@@ -7,15 +7,15 @@
 
 #include "cli.hpp"
 #include "evade/assessment/assess_params.hpp"
-#include "evade/assessment/cam_params.hpp"
+#include "evade/cam/cam_params.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
+#include "evade/commands/screen_scenario.hpp"
 #include "evade/core/earth_params.hpp"
-#include "evade/dynamics/propagate_command.hpp"
+#include "evade/commands/propagate_command.hpp"
 #include "evade/formation/decision.hpp"
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/formation/plan_inputs.hpp"
 #include "evade/guidance/guidance_params.hpp"
 #include "evade/guidance_lcm/node_params.hpp"
 #include "evade/observability/observability_params.hpp"
@@ -55,7 +55,7 @@ std::string threat_and_screening_sections() {
   md += section("Threat area: evasion search (paper 001)", "`evade plan threat-area`", "",
                 threat::evasion_params());
   md += section("Screening span (paper 002)", "`evade screen`", "",
-                conjunction::screen_scenario_params());
+                commands::screen_scenario_params());
   md += section("Adaptive step (paper 002)", "`evade screen --method paper`", "paper_step.",
                 conjunction::paper_step_params());
   md += section("Robust screening", "`evade screen`", "robust.",
@@ -79,7 +79,7 @@ std::string formation_to_cam_sections() {
   md += section("Conjunction assessment", "`evade assess`",
                 "assessment.", assessment::assess_params());
   md += section("Collision-avoidance manoeuvre", "`evade plan cam`", "cam.",
-                assessment::cam_params());
+                cam::cam_params());
   return md;
 }
 
@@ -91,7 +91,7 @@ std::string parameters_markdown() {
       "and the allowed range, with the same text in every command and in the guidance node.\n";
   md += section("Earth model", "every command that reads `earth.*`", "earth.", earth_params());
   md += section("Propagation demo", "`evade propagate`", "propagation.",
-                dynamics::propagate_params());
+                commands::propagate_params());
   return md + guidance_sections() + threat_and_screening_sections() + formation_to_cam_sections();
 }
 

@@ -1,6 +1,6 @@
 // `evade plan cam`: the minimum-Δv collision-avoidance burn of the primary (object1), made
 // --lead-s before TCA, after which Pc < --pc-max and the miss > --min-miss-m
-// (evade::assessment::run_plan_cam, plan_cam_command.hpp), verified by propagation. The
+// (evade::commands::run_plan_cam, plan_cam_command.hpp), verified by propagation. The
 // conjunction comes from a scenario's `conjunction:` block (--scenario) or a CCSDS CDM
 // (--cdm). --sweep-lead A:B:N prints the trade space (lead time against Δv, Pc before and
 // after) as CSV, or JSON with --json. --publish sends the plan as evade_burn_plan_t on LCM
@@ -19,14 +19,16 @@
 #include "evade/config/json_values.hpp"
 #include "number_list.hpp"
 #include "plan_output.hpp"
-#include "evade/assessment/cam_burn_plan.hpp"
-#include "evade/assessment/plan_cam_command.hpp"
+#include "evade/cam/cam_burn_plan.hpp"
+#include "evade/commands/plan_cam_command.hpp"
 
 namespace evade::cli {
 namespace {
 namespace cmd_plan_cam {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::assessment;
+using namespace evade::cam;
+using namespace evade::commands;
 
 struct Options {
   CommonOptions common;  // --scenario, --set, --json

@@ -6,15 +6,15 @@
 // --numerical-limits adds Table 1 recomputed by bisection on propagated margins. --publish
 // sends the decision's two burns (formation::make_burn_plan) as evade_burn_plan_t on LCM
 // (plan_output.hpp, the same path as the other planners). I/O only: everything is read,
-// computed and formatted by formation::read_formation_request, run_formation, to_json and
-// to_text (src/formation/); this file parses the flags and prints.
+// computed and formatted by commands::read_formation_request, run_formation, to_json and
+// to_text (src/commands/); this file parses the flags and prints.
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
 
 #include "cli.hpp"
-#include "evade/formation/formation_command.hpp"
+#include "evade/commands/formation_command.hpp"
 #include "plan_output.hpp"
 
 namespace evade::cli {
@@ -22,6 +22,7 @@ namespace {
 namespace cmd_plan_formation {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::formation;
+using namespace evade::commands;
 
 struct PlanFormationOptions {
   CommonOptions common;

@@ -12,7 +12,7 @@
 #include "cli.hpp"
 #include "plan_output.hpp"
 #include "evade/observability/burn_plan.hpp"
-#include "evade/observability/observability_command.hpp"
+#include "evade/commands/observability_command.hpp"
 
 namespace evade::cli {
 namespace {
@@ -20,27 +20,27 @@ namespace cmd_plan_observability {  // a name of its own: the CLI builds as unit
 
 struct Options {
   CommonOptions common;
-  observability::ObservabilityOverrides overrides;  // --objective, --seed
+  commands::ObservabilityOverrides overrides;  // --objective, --seed
   PlanOutputOptions out;
 };
 
 int run(const Options& o) {
   const config::Scenario sc = load_scenario(o.common);
-  observability::ObservabilityRequest req =
-      observability::read_observability_request(sc, o.overrides);
+  commands::ObservabilityRequest req =
+      commands::read_observability_request(sc, o.overrides);
   req.isres.progress = [](int n, double best) {
     (void)std::fprintf(stderr, "plan observability: %d evaluations, best %.9g\n", n, best);
   };
-  const observability::ObservabilityResult r = observability::run_observability(req);
+  const commands::ObservabilityResult r = commands::run_observability(req);
   (void)std::fprintf(stderr, "plan observability: done, %d evaluations in %.3f s\n",
                      r.plan.evaluations, r.runtime_s);
 
-  nlohmann::json j = observability::to_json(r);
+  nlohmann::json j = commands::to_json(r);
   const int uplink_rc =
       plan_wanted(o.out)
           ? output_plan(o.out, observability::make_burn_plan(r.plan, plan_id(o.out)), &j)
           : 0;
-  print_result(o.common.json, j, observability::to_text(r));
+  print_result(o.common.json, j, commands::to_text(r));
   return uplink_rc;  // 0, or the uplink's 3 (rejected) / 4 (no acknowledgement)
 }
 

@@ -1,8 +1,8 @@
 // `evade plan threat-area`: paper 001 (Yu, Wang, Sun 2017) — the chaser's potential threat area
 // (sec. 2.2), the target's optimal evasive burn direction at fixed V_E (sec. 3, GA → ISRES),
 // the smallest eliminating burn (sec. 4.2, Fig. 8 / Table 3), and the transfer-time study
-// (Fig. 4). I/O only: the request is read by threat::read_threat_area_request, the study run
-// by threat::run_threat_area and printed by its to_json / to_text (src/threat/); this file
+// (Fig. 4). I/O only: the request is read by commands::read_threat_area_request, the study run
+// by commands::run_threat_area and printed by its to_json / to_text (src/commands/); this file
 // parses the flags, prints and plots.
 // --publish sends the evasive burn at V_E (threat::make_burn_plan: one RSW impulse at t0) as
 // evade_burn_plan_t on LCM (plan_output.hpp, the same path as the other planners).
@@ -20,7 +20,7 @@
 #include "evade/threat/burn_plan.hpp"
 #include "param_flag_option.hpp"
 #include "plan_output.hpp"
-#include "evade/threat/threat_area_command.hpp"
+#include "evade/commands/threat_area_command.hpp"
 #include "evade/threat/threat_params.hpp"
 #include "evade/config/read_params.hpp"
 
@@ -29,6 +29,7 @@ namespace {
 namespace cmd_plan_threat_area {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::threat;
+using namespace evade::commands;
 
 struct ThreatCmdOptions {
   CommonOptions common;

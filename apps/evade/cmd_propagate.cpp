@@ -1,6 +1,6 @@
 // `evade propagate`: the foundation demo, one orbit with the chosen gravity model
-// (evade/dynamics/propagate_command.hpp). With --tle or --omm it propagates every object of a
-// catalog with SGP4 instead, written as it goes (evade/sgp4/propagate_catalog_stream.hpp):
+// (evade/commands/propagate_command.hpp). With --tle or --omm it propagates every object of a
+// catalog with SGP4 instead, written as it goes (evade/commands/propagate_catalog_stream.hpp):
 // --json one streamed JSON document, --csv one row per state. Parse, call, print.
 #include <cstdio>
 #include <memory>
@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cli.hpp"
-#include "evade/dynamics/propagate_command.hpp"
-#include "evade/sgp4/propagate_catalog_stream.hpp"
+#include "evade/commands/propagate_command.hpp"
+#include "evade/commands/propagate_catalog_stream.hpp"
 
 namespace evade::cli {
 namespace {
@@ -18,7 +18,7 @@ namespace cmd_propagate {  // a name of its own: the CLI builds as unity batches
 struct CatalogFlags {
   std::string tle_path;  ///< --tle: TLE or 3LE text
   std::string omm_path;  ///< --omm: OMM KVN or XML, or GP JSON or CSV (detected from the text)
-  sgp4::PropagateCatalogRequest request;  ///< --span-s, --step-s, --frame
+  commands::PropagateCatalogRequest request;  ///< --span-s, --step-s, --frame
   bool csv = false;                       ///< --csv: one row per state
   int threads = 0;                        ///< --threads (0: the hardware's)
 };
@@ -40,21 +40,21 @@ void write_stdout(const char* data, std::size_t size) {
 int run_catalog(const PropagateOptions& o) {
   if (!o.common.sets.empty()) throw std::invalid_argument("--set applies to the scenario, not to --tle/--omm");
   if (o.common.json && o.catalog.csv) throw std::invalid_argument("--json and --csv: choose one");
-  sgp4::PropagateCatalogRequest req = o.catalog.request;
-  sgp4::check_propagate_catalog_request(req);  // the flags before the file
+  commands::PropagateCatalogRequest req = o.catalog.request;
+  commands::check_propagate_catalog_request(req);  // the flags before the file
   req.catalog = read_catalog_file(o.catalog.tle_path, o.catalog.omm_path);
   for (const auto& is : req.catalog.issues)
     (void)std::fprintf(stderr, "evade propagate: bad entry: %s\n", is.message().c_str());
-  const sgp4::StateFormat f = o.common.json  ? sgp4::StateFormat::kJson
-                              : o.catalog.csv ? sgp4::StateFormat::kCsv
-                                              : sgp4::StateFormat::kNone;
+  const commands::StateFormat f = o.common.json  ? commands::StateFormat::kJson
+                              : o.catalog.csv ? commands::StateFormat::kCsv
+                                              : commands::StateFormat::kNone;
   static char buffer[1 << 20];  // full buffering of the stream: 1 MiB writes
   (void)std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);  // before any output: cannot fail
-  const sgp4::StreamedCatalog r =
-      sgp4::stream_propagate_catalog(req, f, o.catalog.threads, &write_stdout);
-  if (f == sgp4::StateFormat::kNone) print(sgp4::to_text(r));
-  for (const sgp4::StreamedTrack& t : r.objects)
-    if (f == sgp4::StateFormat::kCsv && t.error != sgp4::Sgp4Error::kNone)
+  const commands::StreamedCatalog r =
+      commands::stream_propagate_catalog(req, f, o.catalog.threads, &write_stdout);
+  if (f == commands::StateFormat::kNone) print(commands::to_text(r));
+  for (const commands::StreamedTrack& t : r.objects)
+    if (f == commands::StateFormat::kCsv && t.error != sgp4::Sgp4Error::kNone)
       (void)std::fprintf(stderr, "evade propagate: object %ld stopped at t = %.3f s: %s\n", t.id,
                          t.error_t_s, sgp4::sgp4_error_text(t.error));
   return 0;
@@ -63,9 +63,9 @@ int run_catalog(const PropagateOptions& o) {
 int run_propagate(const PropagateOptions& o) {
   if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) return run_catalog(o);
   const config::Scenario sc = load_scenario(o.common);
-  const dynamics::PropagateResult r = dynamics::run_propagate(dynamics::read_propagate_request(sc));
-  if (o.common.json) print_json(dynamics::to_json(r));
-  else print(dynamics::to_text(r));
+  const commands::PropagateResult r = commands::run_propagate(commands::read_propagate_request(sc));
+  if (o.common.json) print_json(commands::to_json(r));
+  else print(commands::to_text(r));
   return 0;
 }
 

@@ -22,11 +22,11 @@
 #include "param_flag_option.hpp"
 #include "cmd_screen_catalog.hpp"
 #include "screen_cdm_out.hpp"
-#include "evade/conjunction/catalog.hpp"
+#include "evade/commands/screen_objects.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_command.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
+#include "evade/commands/screen_command.hpp"
+#include "evade/commands/screen_scenario.hpp"
 #include "evade/distributed/distributed_screen.hpp"
 
 namespace evade::cli {
@@ -34,6 +34,7 @@ namespace {
 namespace cmd_screen {  // a name of its own: the CLI builds as unity batches too
 
 using namespace evade::conjunction;
+using namespace evade::commands;
 
 struct Options {
   CommonOptions common;
@@ -101,7 +102,7 @@ int run_catalog(const Options& o) {
   c.threads = o.threads;
   c.json = o.common.json;
   c.quiet = o.quiet;
-  assessment::check_screen_cdm_options(screen_cdm_options(c.cdm), false);
+  commands::check_screen_cdm_options(screen_cdm_options(c.cdm), false);
   create_cdm_dir(c.cdm.dir);
   return run_catalog_screen(c);
 }

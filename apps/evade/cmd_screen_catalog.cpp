@@ -1,6 +1,6 @@
 // `evade screen --tle FILE | --omm FILE [--primary ID] [--span-s S] [--threshold-m D]
 // [--step-s H] [--start UTC] [--threads N] [--json]`: reads the file (the only input I/O),
-// screens it by conjunction::run_screen_catalog and prints its JSON or text. Under
+// screens it by commands::run_screen_catalog and prints its JSON or text. Under
 // `mpirun -np N` the perturbation envelopes of the setup and the grid steps are split between
 // the ranks (distributed_screen.hpp) and rank 0 prints the merged result.
 #include "cmd_screen_catalog.hpp"
@@ -8,16 +8,16 @@
 #include <cstdio>
 
 #include "cli.hpp"
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 #include "evade/distributed/distributed_screen.hpp"
 
 namespace evade::cli {
 
 int run_catalog_screen(const CatalogScreenOptions& o) {
-  conjunction::ScreenCatalogRequest req;
+  commands::ScreenCatalogRequest req;
   req.source = o.tle_path.empty() ? o.omm_path : o.tle_path;
   req.primary_norad = o.primary_norad;
-  conjunction::apply_param_overrides(o.param_overrides, &req);
+  commands::apply_param_overrides(o.param_overrides, &req);
   req.start_utc = o.start_utc;
   req.threads = o.threads;
   req.prefilter = !o.no_prefilter;
@@ -42,7 +42,7 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
     };
     req.sum_over_ranks = [&mpi](std::vector<double>& v) { distributed::sum_over_ranks(v, mpi); };
   }
-  const conjunction::ScreenCatalogResult r = conjunction::run_screen_catalog(req);
+  const commands::ScreenCatalogResult r = commands::run_screen_catalog(req);
   if (!lead) return 0;  // rank 0 holds the merged result
   if (r.cdm) write_cdm_files(*r.cdm);
   if (o.json) print_json(to_json(r));

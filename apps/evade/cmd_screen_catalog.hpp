@@ -1,6 +1,6 @@
 // `evade screen --tle FILE | --omm FILE`: the catalog path of `evade screen` (cmd_screen.cpp
 // registers the flags and hands over here): reads the file, calls
-// conjunction::run_screen_catalog (every object moves by SGP4), writes the CDMs and prints.
+// commands::run_screen_catalog (every object moves by SGP4), writes the CDMs and prints.
 #pragma once
 
 #include <string>

@@ -32,11 +32,11 @@
 #include "evade/distributed/distributed_monte_carlo.hpp"
 #include "evade/guidance/guidance_params.hpp"
 #include "evade/lcm_link/sim_lcm_guidance.hpp"
-#include "evade/sim/sim_command.hpp"
-#include "evade/sim/sim_csv.hpp"
-#include "evade/sim/sim_overrides.hpp"
+#include "evade/commands/sim_command.hpp"
+#include "evade/commands/sim_csv.hpp"
+#include "evade/commands/sim_overrides.hpp"
 #include "evade/sim/sim_params.hpp"
-#include "evade/sim/sim_plan_command.hpp"
+#include "evade/commands/sim_plan_command.hpp"
 
 namespace {
 namespace cmd_sim {  // a name of its own: the CLI builds as unity batches too
@@ -74,7 +74,7 @@ std::string num(double v) {
 // sim_overrides.hpp).
 config::Scenario scenario_with_flags(const SimOptions& o) {
   config::Scenario sc = cli::load_scenario(o.common);
-  sim::apply_sim_overrides({o.param_overrides, o.no_rates}, &sc);
+  commands::apply_sim_overrides({o.param_overrides, o.no_rates}, &sc);
   return sc;
 }
 
@@ -131,12 +131,12 @@ sim::SampleCallback csv_writer(const SimOptions& o, std::ofstream& csv) {
     throw std::invalid_argument((o.csv.empty() ? "--plot: the time history " : "--csv = ") + path +
                                 ": cannot open for writing");
   }
-  csv << sim::sim_csv_header() << '\n';
-  return [&csv](const sim::SimSample& s) { sim::write_sim_csv_row(csv, s); };
+  csv << commands::sim_csv_header() << '\n';
+  return [&csv](const sim::SimSample& s) { commands::write_sim_csv_row(csv, s); };
 }
 
 // --runs: progress on stderr; under `mpirun -np N` the runs are split between the ranks.
-void set_monte_carlo(const SimOptions& o, sim::SimCommandRequest* req) {
+void set_monte_carlo(const SimOptions& o, commands::SimCommandRequest* req) {
   req->runs = o.runs;
   req->seed = static_cast<std::uint64_t>(o.seed);
   req->threads = o.threads;
@@ -151,7 +151,7 @@ void set_monte_carlo(const SimOptions& o, sim::SimCommandRequest* req) {
 }
 
 // --lcm URL [--realtime] [--key FILE]: the guidance in evade_guidance_node.
-void set_guidance(const SimOptions& o, sim::SimCommandRequest* req) {
+void set_guidance(const SimOptions& o, commands::SimCommandRequest* req) {
   if (o.lcm_url.empty()) return;
   req->guidance = lcm_link::sim_lcm_guidance(
       {o.lcm_url, o.lockstep, o.lcm_timeout_s, o.realtime, o.key_file, o.key_id});
@@ -175,36 +175,36 @@ void print_warnings(const std::vector<std::string>& warnings) {
 
 // --plan: the plan file flown by the in-process law + executor on the scenario's objects.
 int run_plan(const SimOptions& o, const config::Scenario& sc) {
-  sim::SimPlanRequest req = sim::read_sim_plan_request(sc);
+  commands::SimPlanRequest req = commands::read_sim_plan_request(sc);
   req.plan_file = o.plan_file;
   req.plan_epoch_s = o.plan_epoch_s;
   req.after_s = o.plan_after_s;
-  const sim::SimPlanResult r = sim::run_sim_plan(req);
+  const commands::SimPlanResult r = commands::run_sim_plan(req);
   print_warnings(r.warnings);
-  cli::print_result(o.common.json, sim::to_json(r), sim::to_text(r));
+  cli::print_result(o.common.json, commands::to_json(r), commands::to_text(r));
   return r.all_delivered ? 0 : 1;
 }
 
 // The run, its time history written to --csv when given (the file closed on return).
-sim::SimCommandResult simulate(const SimOptions& o, sim::SimCommandRequest req) {
+commands::SimCommandResult simulate(const SimOptions& o, commands::SimCommandRequest req) {
   std::ofstream csv;
   req.on_sample = csv_writer(o, csv);
-  return sim::run_sim_command(req);
+  return commands::run_sim_command(req);
 }
 
 int run_sim(const SimOptions& o) {
   const config::Scenario sc = scenario_with_flags(o);
   check_run_options(o);
   if (!o.plan_file.empty()) return run_plan(o, sc);
-  sim::SimCommandRequest req = sim::read_sim_command_request(sc);
+  commands::SimCommandRequest req = commands::read_sim_command_request(sc);
   set_monte_carlo(o, &req);
   set_guidance(o, &req);
-  const sim::SimCommandResult r = simulate(o, std::move(req));
+  const commands::SimCommandResult r = simulate(o, std::move(req));
   print_warnings(r.warnings);
   if (!r.run.closest_approach_found) return 1;
   if (!r.reporting) return 0;  // MPI rank > 0: rank 0 prints
   if (!o.plot.empty() && !draw_plot(o)) return 1;
-  cli::print_result(o.common.json, sim::to_json(r), sim::to_text(r));
+  cli::print_result(o.common.json, commands::to_json(r), commands::to_text(r));
   return 0;
 }
 

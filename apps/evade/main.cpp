@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "evade/ccsds/catalog_formats.hpp"
 #include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::cli {
@@ -258,7 +259,7 @@ std::string read_text_file(const std::string& path, const std::string& flag) {
 }
 
 sgp4::Catalog read_catalog_file(const std::string& tle_path, const std::string& omm_path) {
-  if (tle_path.empty()) return sgp4::read_catalog(read_text_file(omm_path, "--omm"), omm_path);
+  if (tle_path.empty()) return ccsds::read_catalog(read_text_file(omm_path, "--omm"), omm_path);
   return sgp4::read_tle(read_text_file(tle_path, "--tle"), tle_path);
 }
 

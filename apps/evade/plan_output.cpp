@@ -9,7 +9,7 @@
 
 #include "evade/lcm_link/burn_plan_publisher.hpp"
 #include "evade/lcm_link/command_uplink.hpp"
-#include "evade/sim/plan_file.hpp"
+#include "evade/commands/plan_file.hpp"
 
 namespace evade::cli {
 
@@ -77,7 +77,7 @@ int output_plan(const PlanOutputOptions& o, const BurnPlan& plan, nlohmann::json
   const guidance::PlanFrame frame =
       o.frame == "eci" ? guidance::PlanFrame::kEci : guidance::PlanFrame::kRsw;
   if (!o.plan_out.empty()) {
-    sim::write_plan_file(o.plan_out, sim::PlanFile{plan, frame});
+    commands::write_plan_file(o.plan_out, commands::PlanFile{plan, frame});
     (*j)["plan_file"] = o.plan_out;
   }
   if (!o.publish) {

@@ -30,8 +30,8 @@ void add_cdm_out_options(CLI::App& app, CdmOutOptions& o) {
   (void)add_param_flag(app, "assessment.mc_max_samples", *spec, &o.assess_sets);
 }
 
-assessment::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
-  assessment::ScreenCdmOptions c;
+commands::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
+  commands::ScreenCdmOptions c;
   c.dir = o.dir;
   c.format = o.format;
   c.cov_rtn_sigma_text = o.cov_sigma;
@@ -42,7 +42,7 @@ assessment::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
   for (const std::string& s : o.assess_sets) sets.apply_override(s);
   config::read_params(sets, "assessment.", assessment::assess_params(), &c.assess);
   c.assess_given = !o.assess_sets.empty();
-  c.sink = [](const assessment::ScreenCdmFile& m) { write_cdm_file(m); };  // as each is made
+  c.sink = [](const commands::ScreenCdmFile& m) { write_cdm_file(m); };  // as each is made
   return c;
 }
 
@@ -61,14 +61,14 @@ void create_cdm_dir(const std::string& dir) {
   std::filesystem::remove(probe, ec);
 }
 
-void write_cdm_file(const assessment::ScreenCdmFile& m) {
+void write_cdm_file(const commands::ScreenCdmFile& m) {
   std::ofstream f(m.path);
   f << m.text;
   f.close();
   if (!f) throw std::runtime_error("--cdm-out: cannot write '" + m.path + "'");
 }
 
-void write_cdm_files(const assessment::ScreenCdms& cdms) {
+void write_cdm_files(const commands::ScreenCdms& cdms) {
   for (const auto& m : cdms.files)
     if (!m.text.empty()) write_cdm_file(m);  // the sink wrote the others as they were made
   if (!cdms.files.empty())

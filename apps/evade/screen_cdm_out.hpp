@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "evade/assessment/screen_cdms.hpp"
+#include "evade/commands/screen_cdms.hpp"
 
 namespace evade::cli {
 
@@ -26,17 +26,17 @@ void add_cdm_out_options(CLI::App& app, CdmOutOptions& o);
 
 /// The library's options from the flags (R,T,N read as a number list), with a sink that
 /// writes each message's file as soon as the library makes it.
-assessment::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o);
+commands::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o);
 
 /// Creates DIR (when given) and checks that a file can be written there. Throws
 /// std::invalid_argument naming --cdm-out.
 void create_cdm_dir(const std::string& dir);
 
 /// One message's file. Throws std::runtime_error when it cannot be written.
-void write_cdm_file(const assessment::ScreenCdmFile& m);
+void write_cdm_file(const commands::ScreenCdmFile& m);
 
 /// Writes the messages the sink has not written (those still holding their text) and says
 /// on stderr how many there are. Throws std::runtime_error when a file cannot be written.
-void write_cdm_files(const assessment::ScreenCdms& cdms);
+void write_cdm_files(const commands::ScreenCdms& cdms);
 
 }  // namespace evade::cli

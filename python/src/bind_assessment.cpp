@@ -25,19 +25,23 @@
 #include <nanobind/stl/vector.h>
 
 #include "bind_common.hpp"
-#include "evade/assessment/assess_command.hpp"
-#include "evade/assessment/cam_burn_plan.hpp"
-#include "evade/assessment/cdm.hpp"
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
-#include "evade/assessment/conjunction_input.hpp"
-#include "evade/assessment/plan_cam_command.hpp"
+#include "evade/commands/assess_command.hpp"
+#include "evade/cam/cam_burn_plan.hpp"
+#include "evade/ccsds/cdm.hpp"
+#include "evade/ccsds/cdm_kvn.hpp"
+#include "evade/ccsds/cdm_xml.hpp"
+#include "evade/ccsds/cdm_formats.hpp"
+#include "evade/commands/conjunction_input.hpp"
+#include "evade/commands/plan_cam_command.hpp"
 #include "evade/core/epoch.hpp"
 
 namespace evade::python {
 namespace {
 
 using namespace evade::assessment;
+using namespace evade::cam;
+using namespace evade::commands;
+using namespace evade::ccsds;
 
 /// A CDM argument as the Python layer hands it: a file's path (read here, as the CLI's
 /// --cdm), or a text with the name the result gives it.
@@ -211,8 +215,8 @@ void bind_cdm(nb::module_& m) {
       .def("tca_j2000_s", [](const Cdm& c) {
         return seconds_since_j2000_from_calendar(parse_calendar_utc(cdm_value(c.relative, "TCA")));
       });
-  m.def("cdm_read_text", &read_cdm_text, nb::arg("text"), "A CDM's text (KVN, or XML when it starts with '<').");
-  m.def("cdm_read_file", [](const std::string& path) { return read_cdm_text(read_text_file(path, "cdm")); },
+  m.def("cdm_read_text", &ccsds::read_cdm_text, nb::arg("text"), "A CDM's text (KVN, or XML when it starts with '<').");
+  m.def("cdm_read_file", [](const std::string& path) { return ccsds::read_cdm_text(read_text_file(path, "cdm")); },
         nb::arg("path"));
 }
 

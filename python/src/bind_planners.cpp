@@ -19,18 +19,18 @@
 
 #include "bind_common.hpp"
 #include "evade/core/burn_plan.hpp"
-#include "evade/formation/formation_command.hpp"
+#include "evade/commands/formation_command.hpp"
 #include "evade/observability/burn_plan.hpp"
-#include "evade/observability/observability_command.hpp"
-#include "evade/sim/plan_file.hpp"
+#include "evade/commands/observability_command.hpp"
+#include "evade/commands/plan_file.hpp"
 #include "evade/threat/burn_plan.hpp"
-#include "evade/threat/threat_area_command.hpp"
+#include "evade/commands/threat_area_command.hpp"
 
 namespace evade::python {
 namespace {
 
 // The names of the plan file and of the observability objectives, from their one table each.
-std::string source_name(int source) { return sim::plan_source_name(source); }
+std::string source_name(int source) { return commands::plan_source_name(source); }
 std::string objective_name(int objective) { return observability::plan_objective_name(objective); }
 
 std::size_t impulse_count(const BurnPlan& p) {
@@ -73,7 +73,7 @@ nb::tuple result_pair(const nlohmann::json& j, const std::optional<BurnPlan>& pl
 nb::tuple threat_area(const std::string& scenario, const std::vector<std::string>& sets, long seed,
                       bool eliminate, const std::vector<double>& sweep_dv_mps,
                       const std::vector<double>& sweep_transfer_s, std::int64_t plan_id) {
-  threat::ThreatAreaRequest req = threat::read_threat_area_request(load_scenario(scenario, sets));
+  commands::ThreatAreaRequest req = commands::read_threat_area_request(load_scenario(scenario, sets));
   if (seed >= 0) req.scenario.evasion.seed = static_cast<std::uint64_t>(seed);
   req.study.eliminate = eliminate;
   req.study.sweep_dv_mps = sweep_dv_mps;
@@ -82,8 +82,8 @@ nb::tuple threat_area(const std::string& scenario, const std::vector<std::string
   std::optional<BurnPlan> plan;
   {
     nb::gil_scoped_release unlocked;
-    const threat::ThreatAreaResult r = threat::run_threat_area(req);
-    j = threat::to_json(r);
+    const commands::ThreatAreaResult r = commands::run_threat_area(req);
+    j = commands::to_json(r);
     // V_E = 0 (evasion.dv_mps = 0): no burn to fly.
     if (r.study.evasion.dv_mps > 0.0) plan = threat::make_burn_plan(r.study.evasion, plan_id);
   }
@@ -92,33 +92,33 @@ nb::tuple threat_area(const std::string& scenario, const std::vector<std::string
 
 nb::tuple formation_plan(const std::string& scenario, const std::vector<std::string>& sets,
                          bool numerical_limits, std::int64_t plan_id) {
-  formation::FormationRequest req = formation::read_formation_request(load_scenario(scenario, sets));
+  commands::FormationRequest req = commands::read_formation_request(load_scenario(scenario, sets));
   req.numerical_limits = numerical_limits;
   nlohmann::json j;
   std::optional<BurnPlan> plan;
   {
     nb::gil_scoped_release unlocked;
-    const formation::FormationResult r = formation::run_formation(req);
-    j = formation::to_json(r);
+    const commands::FormationResult r = commands::run_formation(req);
+    j = commands::to_json(r);
     // No maneuver needed, or an infeasible decision (its trade-off is never published).
-    if (r.decision.maneuver_needed && r.decision.feasible) plan = formation::make_burn_plan(r, plan_id);
+    if (r.decision.maneuver_needed && r.decision.feasible) plan = commands::make_burn_plan(r, plan_id);
   }
   return result_pair(j, plan);
 }
 
 nb::tuple observability_plan(const std::string& scenario, const std::vector<std::string>& sets,
                              const std::string& objective, long seed, std::int64_t plan_id) {
-  observability::ObservabilityOverrides ov;
+  commands::ObservabilityOverrides ov;
   ov.objective = objective;
   ov.seed = seed;
-  observability::ObservabilityRequest req =
-      observability::read_observability_request(load_scenario(scenario, sets), ov);
+  commands::ObservabilityRequest req =
+      commands::read_observability_request(load_scenario(scenario, sets), ov);
   nlohmann::json j;
   BurnPlan plan;
   {
     nb::gil_scoped_release unlocked;
-    const observability::ObservabilityResult r = observability::run_observability(req);
-    j = observability::to_json(r);
+    const commands::ObservabilityResult r = commands::run_observability(req);
+    j = commands::to_json(r);
     plan = observability::make_burn_plan(r.plan, plan_id);
   }
   return result_pair(j, plan);

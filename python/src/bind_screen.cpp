@@ -10,12 +10,13 @@
 #include <nanobind/stl/vector.h>
 
 #include "bind_common.hpp"
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 
 namespace evade::python {
 namespace {
 
 using namespace evade::conjunction;
+using namespace evade::commands;
 
 nb::object screen_objects(const std::string& scenario, const std::vector<std::string>& sets,
                           const std::string& method, long population, long seed,

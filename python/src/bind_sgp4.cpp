@@ -10,6 +10,7 @@
 
 #include "bind_common.hpp"
 #include "evade/core/epoch.hpp"
+#include "evade/ccsds/catalog_formats.hpp"
 #include "evade/sgp4/catalog.hpp"
 #include "evade/sgp4/mean_elements.hpp"
 #include "evade/sgp4/propagate_grid.hpp"
@@ -79,10 +80,10 @@ void bind_sgp4(nb::module_& m) {
                    "entries rejected by the reader")
       .def_prop_ro("issues", &issue_messages,
                    "one message per rejected entry: 'FILE:LINE:COL: expected ..., found ...'");
-  m.def("read_catalog_text", &sgp4::read_catalog, nb::arg("text"), nb::arg("source"),
+  m.def("read_catalog_text", &ccsds::read_catalog, nb::arg("text"), nb::arg("source"),
         "Reads a catalog's text (format guessed: TLE/3LE, OMM KVN/XML, GP JSON/CSV).");
   m.def("read_catalog_file", [](const std::string& path) {
-        return sgp4::read_catalog(read_text_file(path, "catalog"), path);
+        return ccsds::read_catalog(read_text_file(path, "catalog"), path);
       }, nb::arg("path"));
   m.def("sgp4_propagate", &propagate, nb::arg("catalog"), nb::arg("start_utc"), nb::arg("t_s"),
         nb::arg("frame"), nb::arg("threads"),

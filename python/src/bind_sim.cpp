@@ -29,8 +29,8 @@
 #include "evade/guidance/guidance_law.hpp"
 #include "evade/guidance/guidance_params.hpp"
 #include "evade/sim/monte_carlo.hpp"
-#include "evade/sim/sim_command.hpp"
-#include "evade/sim/sim_csv.hpp"
+#include "evade/commands/sim_command.hpp"
+#include "evade/commands/sim_csv.hpp"
 
 namespace evade::python {
 namespace {
@@ -75,9 +75,9 @@ void check_run_options(int runs, int threads, long long seed) {
 nb::dict series_columns(const std::vector<SimSample>& samples) {
   nb::dict out;
   std::size_t n = 0;
-  const sim::SimCsvColumn* columns = sim::sim_csv_columns(&n);
+  const commands::SimCsvColumn* columns = commands::sim_csv_columns(&n);
   for (std::size_t k = 0; k < n; ++k) {
-    const sim::SimCsvColumn& c = columns[k];
+    const commands::SimCsvColumn& c = columns[k];
     if (c.text != nullptr) {
       nb::list names;
       for (const SimSample& s : samples) names.append(c.text(s));
@@ -99,17 +99,17 @@ nb::tuple simulate(const std::string& scenario, const std::string& path,
                    const std::vector<std::string>& sets, int runs, long long seed, int threads,
                    bool series) {
   std::vector<SimSample> samples;
-  sim::SimCommandResult r;
+  commands::SimCommandResult r;
   {
     nb::gil_scoped_release unlocked;  // reading the scenario too: runs in threads run in parallel
     const config::Scenario sc = load_named_scenario(scenario, path, sets);
     check_run_options(runs, threads, seed);
-    sim::SimCommandRequest req = sim::read_sim_command_request(sc);
+    commands::SimCommandRequest req = commands::read_sim_command_request(sc);
     req.runs = runs;
     req.seed = static_cast<std::uint64_t>(seed);
     req.threads = threads;
     if (series) req.on_sample = [&samples](const SimSample& s) { samples.push_back(s); };
-    r = sim::run_sim_command(req);
+    r = commands::run_sim_command(req);
   }
   nb::object miss = nb::none(), dv = nb::none();
   if (r.monte_carlo) {
@@ -117,7 +117,7 @@ nb::tuple simulate(const std::string& scenario, const std::string& path,
     miss = nb::cast(numpy_from_vector(m.miss_m, {m.miss_m.size()}));
     dv = nb::cast(numpy_from_vector(m.dv_mps, {m.dv_mps.size()}));
   }
-  return nb::make_tuple(json_to_python(sim::to_json(r)), r.run.closest_approach_found,
+  return nb::make_tuple(json_to_python(commands::to_json(r)), r.run.closest_approach_found,
                         r.warnings, series ? nb::object(series_columns(samples)) : nb::none(),
                         miss, dv);
 }

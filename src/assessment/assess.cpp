@@ -95,16 +95,15 @@ void repair_covariances(const ConjunctionInput& in, Assessment* a) {
   }
 }
 
-// The encounter plane and the 2D methods; undefined (NaN) when the relative speed is zero.
-void two_d_methods(const ConjunctionInput& in, const AssessConfig& cfg, Assessment* a) {
+// The encounter plane and the plane methods (pc_methods.hpp); undefined (NaN) when the
+// relative speed is zero.
+void plane_methods(const ConjunctionInput& in, const AssessConfig& cfg, Assessment* a) {
   const Vec3 v_rel = a->at_tca[1].state.v_eci_mps - a->at_tca[0].state.v_eci_mps;
   if (!(v_rel.squaredNorm() > 0.0)) {  // no encounter plane
     const double nan = std::numeric_limits<double>::quiet_NaN();
     a->plane.miss_3d_m = (a->at_tca[1].state.r_eci_m - a->at_tca[0].state.r_eci_m).norm();
     a->principal = {nan, nan, nan, nan};
-    a->pc_2d = {nan, nan, 0};
-    a->pc_chan = nan;
-    a->pc_max = {nan, nan};
+    a->plane_pc = undefined_plane_pc_values();
     a->short_term.valid = false;
     a->short_term.reason = "relative speed is zero: no encounter plane, the 2D Pc is undefined";
     return;
@@ -112,9 +111,7 @@ void two_d_methods(const ConjunctionInput& in, const AssessConfig& cfg, Assessme
   a->plane = encounter_plane(a->at_tca[0].state, a->at_tca[0].cov_eci.block<3, 3>(0, 0),
                              a->at_tca[1].state, a->at_tca[1].cov_eci.block<3, 3>(0, 0));
   a->principal = principal_axes(a->plane);
-  a->pc_2d = pc_2d(a->principal, in.hbr_m, cfg.pc_rel_tol);
-  a->pc_chan = pc_chan(a->principal, in.hbr_m);
-  a->pc_max = pc_max_alfano(a->principal, in.hbr_m);
+  a->plane_pc = plane_pc_values(a->principal, in.hbr_m, cfg.pc_rel_tol);
   a->short_term = short_term(*a, in.hbr_m, cfg, in.earth);
 }
 
@@ -176,7 +173,7 @@ Assessment assess(const ConjunctionInput& given, const AssessConfig& cfg,
               : "6x6 covariances by the J2 state transition matrix; 3x3 position covariances "
                 "held constant over the shift";
   repair_covariances(in, &a);
-  two_d_methods(in, cfg, &a);
+  plane_methods(in, cfg, &a);
   run_requested_mc(in, cfg, mc, runner, &a);
   return a;
 }

@@ -4,7 +4,7 @@
 namespace evade::assessment {
 namespace {
 
-const Param<AssessConfig> kRows[] = {
+const Param<AssessConfig> kAssessRows[] = {
     EVADE_PARAM_REAL(AssessConfig, pc_rel_tol, "-", 1e-14, 1e-2, false,
                      "relative tolerance of the 2D Pc quadrature"),
     EVADE_PARAM_REAL(AssessConfig, short_term_max_period_fraction, "-", 0.0, 1.0, true,
@@ -37,6 +37,6 @@ const Param<AssessConfig> kRows[] = {
 
 }  // namespace
 
-ParamTable<AssessConfig> assess_params() noexcept { return make_param_table(kRows); }
+ParamTable<AssessConfig> assess_params() noexcept { return make_param_table(kAssessRows); }
 
 }  // namespace evade::assessment

@@ -117,19 +117,62 @@ Nc3dResult nc3d_of(const Assessment& a, const std::array<Mat6, 2>& cov, double h
   return pc_3d_nc(a.at_tca[0].state, cov[0], a.at_tca[1].state, cov[1], hbr_m, earth.mu_m3ps2, o);
 }
 
+PcStep step_of(PcMethod m, double pc, std::vector<UsageFlag> usage) {
+  PcStep s;
+  s.value = PcValue{m, pc, {}};
+  s.checks_hold = !any_violated(usage);
+  s.usage = std::move(usage);
+  return s;
+}
+
+// The reason of a recommendation: the steps that failed their checks (failed) or could not
+// run without 6x6 covariances (skipped), then the recommended one (its checks hold, or it is
+// the last resort without checks). "no 2D usage check fails"; "a 2D usage check fails; no
+// 3D-Nc check fails"; "a 2D usage check and a 3D-Nc check fail"; "a 2D usage check fails and
+// 3D-Nc needs 6x6 covariances".
+std::string reason(const std::vector<const PcMethodRow*>& failed,
+                   const std::vector<const PcMethodRow*>& skipped, const PcMethodRow& chosen) {
+  auto check = [](const PcMethodRow* r) { return std::string(r->label) + " " + r->check_noun; };
+  if (chosen.check_noun != nullptr) {
+    std::string t;
+    for (const PcMethodRow* r : failed) t += "a " + check(r) + " fails; ";
+    return t + "no " + check(&chosen) + " fails";
+  }
+  std::string t;
+  for (std::size_t i = 0; i < failed.size(); ++i) t += (i == 0 ? "a " : " and a ") + check(failed[i]);
+  if (skipped.empty()) return t + (failed.size() > 1 ? " fail" : " fails");
+  t += " fails";
+  for (const PcMethodRow* r : skipped) t += std::string(" and ") + r->label + " needs 6x6 covariances";
+  return t;
+}
+
+}  // namespace
+
+const PcStep* PcChoice::step(PcMethod m) const {
+  for (const PcStep& s : steps) {
+    if (s.value.method == m) return &s;
+  }
+  return nullptr;
+}
+
+PcStep escalate_2d(const PcStepInput& in, PcChoice* /*c*/) {
+  return step_of(PcMethod::k2d, pc_of(in.a.plane_pc, PcMethod::k2d),
+                 usage_2d(in.a, in.hbr_m, in.cfg, in.earth));
+}
+
 // 3D-Nc from the covariances as given (a slightly NPD one is used as it is, as CARA does), or
 // from the repaired ones when 3D-Nc refuses those; a refusal of both fails the check
 // "converged" with the reason.
-void run_3d_nc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
-               const EarthModel& earth, PcChoice* c) {
+PcStep escalate_3d_nc(const PcStepInput& in, PcChoice* c) {
+  const Assessment& a = in.a;
   Nc3dOptions o;
-  o.window_s = cfg.window_s;
-  o.gamma = cfg.conj_duration_gamma;
+  o.window_s = in.cfg.window_s;
+  o.gamma = in.cfg.conj_duration_gamma;
   try {
     try {
-      c->nc3d = nc3d_of(a, a.cov_unrepaired_eci, hbr_m, o, earth);
+      c->nc3d = nc3d_of(a, a.cov_unrepaired_eci, in.hbr_m, o, in.earth);
     } catch (const std::invalid_argument&) {
-      c->nc3d = nc3d_of(a, {a.at_tca[0].cov_eci, a.at_tca[1].cov_eci}, hbr_m, o, earth);
+      c->nc3d = nc3d_of(a, {a.at_tca[0].cov_eci, a.at_tca[1].cov_eci}, in.hbr_m, o, in.earth);
     }
   } catch (const std::exception& e) {
     Nc3dResult failed;
@@ -137,44 +180,57 @@ void run_3d_nc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
     failed.failure = e.what();
     c->nc3d = failed;
   }
-  c->spans = nc3d_spans(a, *c->nc3d, earth);
-  c->usage_3d_nc = usage_3d_nc(*c->nc3d, *c->spans, cfg);
+  c->spans = nc3d_spans(a, *c->nc3d, in.earth);
+  return step_of(PcMethod::k3dNc, c->nc3d->pc, usage_3d_nc(*c->nc3d, *c->spans, in.cfg));
 }
 
-}  // namespace
+PcStep escalate_mc(const PcStepInput& in, PcChoice* c) {
+  const Assessment& a = in.a;
+  const AssessConfig& cfg = in.cfg;
+  MonteCarloOptions mc;
+  mc.window_s = cfg.window_s > 0.0 ? cfg.window_s : mc_window_s(a, in.hbr_m, cfg, in.earth);
+  if (c->nc3d && cfg.window_s <= 0.0) mc.window_s = std::max(-c->nc3d->t_begin_s, c->nc3d->t_end_s);
+  mc.samples = cfg.mc_max_samples;
+  mc.target_rel_accuracy = cfg.mc_target_rel_accuracy;
+  mc.threads = in.exec.threads;
+  mc.wave_blocks = in.exec.wave_blocks;
+  mc.j2 = cfg.mc_j2;
+  mc.seed = 1;
+  // A Monte Carlo the caller asked for (in the assessment) serves; else one is run.
+  c->mc = a.mc ? *a.mc : pc_monte_carlo(mc_encounter(a, in.hbr_m, in.earth), mc, in.exec.runner);
+  PcStep s = step_of(PcMethod::kMc, c->mc->pc, {});
+  s.value = monte_carlo_value(*c->mc);
+  return s;
+}
+
+PcValue monte_carlo_value(const MonteCarloResult& mc) {
+  return {PcMethod::kMc, mc.pc, {{"low", mc.pc_low}, {"high", mc.pc_high}}};
+}
 
 PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
                    const EarthModel& earth, bool six_by_six, const McExecution& exec,
                    bool every_method) {
+  const PcStepInput in{a, hbr_m, cfg, earth, exec};
   PcChoice c;
-  c.usage_2d = usage_2d(a, hbr_m, cfg, earth);
-  c.pc = a.pc_2d.pc;
-  c.method = "2d";
-  c.why = "no 2D usage check fails";
-  const bool escalate = any_violated(c.usage_2d);
-  if (six_by_six && (escalate || every_method)) run_3d_nc(a, hbr_m, cfg, earth, &c);
-  if (!escalate) return c;
-  if (c.nc3d && !any_violated(c.usage_3d_nc)) {
-    c.pc = c.nc3d->pc;
-    c.method = "3d_nc";
-    c.why = "a 2D usage check fails; no 3D-Nc check fails";
-    return c;
+  std::vector<const PcMethodRow*> failed, skipped;
+  bool chosen = false;
+  for (const PcMethodRow& row : pc_methods()) {
+    if (row.escalate == nullptr || (chosen && !(every_method && row.every_method))) continue;
+    if (row.needs_six_by_six && !six_by_six) {
+      if (!chosen) skipped.push_back(&row);
+      continue;
+    }
+    c.steps.push_back(row.escalate(in, &c));
+    if (chosen) continue;
+    if (!c.steps.back().checks_hold) {
+      failed.push_back(&row);
+      continue;
+    }
+    chosen = true;
+    c.pc = c.steps.back().value.pc;
+    c.method = row.name;
+    c.why = reason(failed, skipped, row);
   }
-  MonteCarloOptions mc;
-  mc.window_s = cfg.window_s > 0.0 ? cfg.window_s : mc_window_s(a, hbr_m, cfg, earth);
-  if (c.nc3d && cfg.window_s <= 0.0) mc.window_s = std::max(-c.nc3d->t_begin_s, c.nc3d->t_end_s);
-  mc.samples = cfg.mc_max_samples;
-  mc.target_rel_accuracy = cfg.mc_target_rel_accuracy;
-  mc.threads = exec.threads;
-  mc.wave_blocks = exec.wave_blocks;
-  mc.j2 = cfg.mc_j2;
-  mc.seed = 1;
-  // A Monte Carlo the caller asked for (in the assessment) serves; else one is run.
-  c.mc = a.mc ? *a.mc : pc_monte_carlo(mc_encounter(a, hbr_m, earth), mc, exec.runner);
-  c.pc = c.mc->pc;
-  c.method = "mc";
-  c.why = six_by_six ? "a 2D usage check and a 3D-Nc check fail"
-                     : "a 2D usage check fails and 3D-Nc needs 6x6 covariances";
   return c;
 }
 

@@ -1,5 +1,5 @@
 // Strict scalar parsing for the catalog readers (see internal/text_fields.hpp).
-#include "evade/sgp4/internal/text_fields.hpp"
+#include "evade/sgp4/text_fields.hpp"
 
 #include <cctype>
 #include <cstdlib>

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <vector>
 
-#include "evade/sgp4/internal/text_fields.hpp"
+#include "evade/sgp4/text_fields.hpp"
 
 namespace evade::sgp4 {
 namespace {

@@ -5,7 +5,8 @@
 
 #include "evade/assessment/assess.hpp"
 #include "evade/assessment/covariance.hpp"
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/ccsds/cdm_formats.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
 
@@ -16,6 +17,8 @@
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::commands;
 
 Mat6 lower_rtn(const double* l) {  // CDM order: CR_R, CT_R, CT_T, CN_R, ... CNDOT_NDOT
   Mat6 c;
@@ -129,7 +132,7 @@ TEST(MonteCarloPc, CountsEntriesIntoTheSphereWithinTheWindow) {
   std::ifstream in(EVADE_TEST_ALFANO_DIR "/AlfanoTestCase09.cdm");
   std::stringstream ss;
   ss << in.rdbuf();
-  const ConjunctionInput c = conjunction_from_cdm(read_cdm_text(ss.str()), 6.0, kEarthDefault);
+  const ConjunctionInput c = conjunction_from_cdm(ccsds::read_cdm_text(ss.str()), 6.0, kEarthDefault);
   const McEncounter e{c.obj[0].state, c.obj[1].state, c.obj[0].cov_eci, c.obj[1].cov_eci, 6.0,
                       kEarthDefault};
   MonteCarloOptions o;
@@ -177,9 +180,9 @@ TEST(MonteCarloPc, IntervalContains2dPcForFastEncounter) {
   const Assessment a = assess(in, AssessConfig{}, mc);
   ASSERT_TRUE(a.mc.has_value());
   EXPECT_TRUE(a.short_term.valid) << a.short_term.reason;
-  EXPECT_GT(a.pc_2d.pc, 1e-2);
-  EXPECT_LE(a.mc->pc_low, a.pc_2d.pc);
-  EXPECT_GE(a.mc->pc_high, a.pc_2d.pc);
+  EXPECT_GT(pc_of(a.plane_pc, PcMethod::k2d), 1e-2);
+  EXPECT_LE(a.mc->pc_low, pc_of(a.plane_pc, PcMethod::k2d));
+  EXPECT_GE(a.mc->pc_high, pc_of(a.plane_pc, PcMethod::k2d));
 }
 
 TEST(MonteCarloPc, DepartsFrom2dPcAtLowRelativeSpeed) {
@@ -197,13 +200,13 @@ TEST(MonteCarloPc, DepartsFrom2dPcAtLowRelativeSpeed) {
   mc.samples = 4000;
   mc.seed = 3;
   const Assessment a = assess(in, cfg, mc);
-  EXPECT_NEAR(a.pc_2d.pc, 1.46749549e-01, 1e-3 * 1.46749549e-01);  // CARA Pc2D_Foster
+  EXPECT_NEAR(pc_of(a.plane_pc, PcMethod::k2d), 1.46749549e-01, 1e-3 * 1.46749549e-01);  // CARA Pc2D_Foster
   EXPECT_FALSE(a.short_term.valid);
   EXPECT_FALSE(a.short_term.reason.empty());
   ASSERT_TRUE(a.mc.has_value());
-  EXPECT_TRUE(a.pc_2d.pc < a.mc->pc_low || a.pc_2d.pc > a.mc->pc_high)
-      << "MC [" << a.mc->pc_low << ", " << a.mc->pc_high << "] 2D " << a.pc_2d.pc;
-  std::printf("Alfano case 1: 2D %.6g, MC %.6g [%.6g, %.6g], window %.0f s, %s\n", a.pc_2d.pc,
+  EXPECT_TRUE(pc_of(a.plane_pc, PcMethod::k2d) < a.mc->pc_low || pc_of(a.plane_pc, PcMethod::k2d) > a.mc->pc_high)
+      << "MC [" << a.mc->pc_low << ", " << a.mc->pc_high << "] 2D " << pc_of(a.plane_pc, PcMethod::k2d);
+  std::printf("Alfano case 1: 2D %.6g, MC %.6g [%.6g, %.6g], window %.0f s, %s\n", pc_of(a.plane_pc, PcMethod::k2d),
               a.mc->pc, a.mc->pc_low, a.mc->pc_high, a.mc->window_s, a.short_term.reason.c_str());
 }
 

@@ -11,7 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "evade/assessment/conjunction_input.hpp"
+#include "evade/ccsds/cdm_formats.hpp"
+#include "evade/commands/conjunction_input.hpp"
 #include "evade/assessment/equinoctial.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
@@ -20,6 +21,8 @@
 
 namespace evade::assessment {
 namespace {
+
+using namespace evade::commands;
 
 constexpr double kMu = 3.986004418e14;  // CARA's GM [m^3/s^2]
 
@@ -60,7 +63,7 @@ ConjunctionInput load_case(int file, double hbr_m) {
   if (!in) throw std::runtime_error(std::string("cannot open ") + name);
   std::stringstream ss;
   ss << in.rdbuf();
-  return conjunction_from_cdm(read_cdm_text(ss.str()), hbr_m, kEarthDefault);
+  return conjunction_from_cdm(ccsds::read_cdm_text(ss.str()), hbr_m, kEarthDefault);
 }
 
 Nc3dResult run(const ConjunctionInput& c, const Nc3dOptions& opt) {

@@ -103,7 +103,7 @@ TEST(PcValidation, CaraOmitronCase01FromStates) {
   cfg.tca_search_s = 0.0;  // CARA evaluates at the given states: no TCA shift
   const Assessment a = assess(in, cfg);
   const double expected = 2.70601573490125e-05;
-  EXPECT_NEAR(a.pc_2d.pc, expected, 1e-3 * expected);
+  EXPECT_NEAR(pc_of(a.plane_pc, PcMethod::k2d), expected, 1e-3 * expected);
 }
 
 TEST(PcMax, MatchesSmallDiskLimitAndBoundsPc) {

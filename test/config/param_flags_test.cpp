@@ -10,7 +10,7 @@
 #include "evade/config/param_flags.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_scenario.hpp"
+#include "evade/commands/screen_scenario.hpp"
 #include "evade/guidance/guidance_params.hpp"
 #include "evade/guidance_lcm/node_params.hpp"
 #include "evade/sim/sim_params.hpp"
@@ -31,7 +31,7 @@ const ParamSpec* declaration(const std::string& key) {
   if (const ParamSpec* s = config::find_param_spec(threat::threat_geometry_params(), "", key))
     return s;
   if (const ParamSpec* s = config::find_param_spec(threat::evasion_params(), "", key)) return s;
-  if (const ParamSpec* s = config::find_param_spec(conjunction::screen_scenario_params(), "", key))
+  if (const ParamSpec* s = config::find_param_spec(commands::screen_scenario_params(), "", key))
     return s;
   if (const ParamSpec* s = config::find_param_spec(assessment::assess_params(), "assessment.", key))
     return s;

@@ -12,11 +12,13 @@
 #include <vector>
 
 #include "evade/config/scenario.hpp"
-#include "evade/conjunction/catalog.hpp"
+#include "evade/commands/screen_objects.hpp"
 #include "evade/conjunction/paper_step.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 struct Table2Row {
   double t_s, step_s, distance_m, radial_speed_mps;

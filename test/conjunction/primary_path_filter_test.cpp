@@ -21,12 +21,14 @@
 
 #include "evade/conjunction/primary_path_filter.hpp"
 #include "evade/conjunction/primary_prefilter.hpp"
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 #include "evade/sgp4/catalog.hpp"
 #include "sgp4_test_catalog.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 TEST(PathBounds, PlaneAndRadiusAgainstDirectionHoldOnTheShippedCatalogOverSevenDays) {
   const sgp4::Catalog cat = testing::shipped_catalog();

@@ -12,12 +12,14 @@
 #include <string>
 
 #include "evade/conjunction/primary_prefilter.hpp"
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 #include "evade/sgp4/catalog.hpp"
 #include "sgp4_test_catalog.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 sgp4::Catalog shipped() { return testing::shipped_catalog(); }
 

@@ -7,12 +7,14 @@
 #include <cmath>
 
 #include "evade/config/scenario.hpp"
-#include "evade/conjunction/catalog.hpp"
+#include "evade/commands/screen_objects.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 TEST(RobustSeed2, FindsAllFourteenHeadOnApproaches) {
   EarthModel earth;

@@ -31,13 +31,15 @@
 #include "evade/conjunction/primary_prefilter.hpp"
 #include "evade/conjunction/reference_screen.hpp"
 #include "evade/conjunction/robust_screen.hpp"
-#include "evade/conjunction/screen_command.hpp"
+#include "evade/commands/screen_command.hpp"
 #include "evade/conjunction/sgp4_motion.hpp"
 #include "evade/sgp4/sgp4.hpp"
 #include "sgp4_test_catalog.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 constexpr long kPrimary = 70000;
 constexpr double kThresholdM = 5000.0;

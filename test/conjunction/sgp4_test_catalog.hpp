@@ -16,6 +16,7 @@
 
 #include "evade/sgp4/catalog.hpp"
 #include "evade/sgp4/mean_elements.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::conjunction::testing {
 
@@ -93,7 +94,7 @@ inline sgp4::Catalog shipped_catalog() {
   std::ifstream in(EVADE_SYNTHETIC_CATALOG);
   std::ostringstream os;
   os << in.rdbuf();
-  return sgp4::read_catalog(os.str(), "synthetic-1200.tle");
+  return sgp4::read_tle(os.str(), "synthetic-1200.tle");
 }
 #endif
 

@@ -6,12 +6,14 @@
 #include <string>
 
 #include "evade/config/scenario.hpp"
-#include "evade/conjunction/catalog.hpp"
+#include "evade/commands/screen_objects.hpp"
 #include "evade/conjunction/population.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 
 namespace evade::conjunction {
 namespace {
+
+using namespace evade::commands;
 
 std::string yaml_with(const std::string& second) {
   return "objects:\n"

@@ -12,7 +12,7 @@
 #include "evade/core/frames.hpp"
 #include "evade/formation/burn_plan.hpp"
 #include "evade/formation/burn_propagation.hpp"
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/commands/formation_scenario.hpp"
 #include "evade/formation/limits.hpp"
 
 namespace evade::formation {
@@ -25,7 +25,7 @@ struct Planned {
 
 Planned plan_of(const char* scenario) {
   const config::Scenario sc = config::Scenario::load(scenario);
-  Planned p{read_plan_inputs(sc), {}};
+  Planned p{commands::read_plan_inputs(sc), {}};
   const LimitsResult lim = compute_limits(p.in.spec, p.in.threatened);
   p.dec = decide(p.in.spec, p.in.threatened, lim, p.in.conjunction, p.in.timing,
                  p.in.propagation);

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "evade/dynamics/orbit_propagator.hpp"
-#include "evade/formation/formation_scenario.hpp"
+#include "evade/commands/formation_scenario.hpp"
 #include "evade/formation/verification.hpp"
 
 namespace evade::formation {
@@ -16,7 +16,7 @@ namespace {
 
 PlanInputs load(const std::string& name) {
   const config::Scenario sc = config::Scenario::load(name);
-  return read_plan_inputs(sc);
+  return commands::read_plan_inputs(sc);
 }
 
 TEST(FormationPropagation, TangentialBurnRealizesDeltaAByVisViva) {

@@ -1,9 +1,9 @@
-// Fuzz harness: the catalog reader evade/sgp4/omm_kvn.hpp on any text (catalog_harness.hpp has
+// Fuzz harness: the catalog reader evade/ccsds/omm_kvn.hpp on any text (catalog_harness.hpp has
 // the properties checked).
 #include "catalog_harness.hpp"
-#include "evade/sgp4/omm_kvn.hpp"
+#include "evade/ccsds/omm_kvn.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  evade::fuzz::run_catalog_reader(data, size, [](const std::string& t) { return evade::sgp4::read_omm_kvn(t, "fuzz"); });
+  evade::fuzz::run_catalog_reader(data, size, [](const std::string& t) { return evade::ccsds::read_omm_kvn(t, "fuzz"); });
   return 0;
 }

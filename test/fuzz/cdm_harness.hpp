@@ -15,9 +15,9 @@
 #include <exception>
 #include <string>
 
-#include "evade/assessment/cdm.hpp"
-#include "evade/assessment/cdm_kvn.hpp"
-#include "evade/assessment/cdm_xml.hpp"
+#include "evade/ccsds/cdm.hpp"
+#include "evade/ccsds/cdm_kvn.hpp"
+#include "evade/ccsds/cdm_xml.hpp"
 #include "fuzz_check.hpp"
 
 namespace evade::fuzz {
@@ -28,16 +28,16 @@ namespace evade::fuzz {
   std::abort();
 }
 
-inline void check_accepted_cdm(const assessment::Cdm& cdm) {
+inline void check_accepted_cdm(const ccsds::Cdm& cdm) {
   try {
-    assessment::validate_cdm(cdm);
+    ccsds::validate_cdm(cdm);
     for (int i = 0; i < 2; ++i) {
-      (void)assessment::cdm_state(cdm, i);
-      (void)assessment::cdm_cov_rtn(cdm, i);
+      (void)ccsds::cdm_state(cdm, i);
+      (void)ccsds::cdm_cov_rtn(cdm, i);
     }
-    const assessment::Cdm kvn = assessment::read_cdm_kvn(assessment::write_cdm_kvn(cdm));
+    const ccsds::Cdm kvn = ccsds::read_cdm_kvn(ccsds::write_cdm_kvn(cdm));
     EVADE_FUZZ_CHECK(kvn == cdm, "KVN round trip leaves the message unchanged");
-    const assessment::Cdm xml = assessment::read_cdm_xml(assessment::write_cdm_xml(cdm));
+    const ccsds::Cdm xml = ccsds::read_cdm_xml(ccsds::write_cdm_xml(cdm));
     EVADE_FUZZ_CHECK(xml == cdm, "XML round trip leaves the message unchanged");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "fuzz property violated: an accepted CDM failed later: %s\n", e.what());
@@ -48,10 +48,10 @@ inline void check_accepted_cdm(const assessment::Cdm& cdm) {
 template <typename Reader>
 void run_cdm_reader(const std::uint8_t* data, std::size_t size, Reader read) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  assessment::Cdm cdm;
+  ccsds::Cdm cdm;
   try {
     cdm = read(text);
-  } catch (const assessment::CdmError& e) {
+  } catch (const ccsds::CdmError& e) {
     EVADE_FUZZ_CHECK(e.what()[0] != '\0', "CdmError has a message");
     return;
   } catch (const std::exception& e) {

@@ -1,7 +1,8 @@
 // SGP4 of N objects x T instants into caller arrays (propagate_grid.hpp), the call under the
-// Python evade.sgp4.propagate: the same numbers as `evade propagate` on the SGP4-VER set of
-// Vallado et al. 2006 (same code path, so bit for bit), errors per instant, instants in any
-// order, threads that do not change a byte, and the checks of its inputs.
+// Python evade.sgp4.propagate: errors per instant, instants in any order, threads that do
+// not change a byte, and the checks of its inputs. That it gives the same numbers as `evade
+// propagate` on the SGP4-VER set of Vallado et al. 2006 (same code path, so bit for bit):
+// test/commands/propagate_catalog_command_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,8 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "evade/sgp4/propagate_catalog_command.hpp"
 #include "evade/sgp4/propagate_grid.hpp"
+#include "evade/sgp4/sgp4.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -25,7 +27,7 @@ Catalog sgp4_ver() {
   std::string line, text;
   while (std::getline(in, line))
     if (line.size() >= 69 && (line[0] == '1' || line[0] == '2')) text += line.substr(0, 69) + "\n";
-  Catalog c = read_catalog(text, "SGP4-VER.TLE");
+  Catalog c = read_tle(text, "SGP4-VER.TLE");
   if (c.objects.size() < 30) throw std::runtime_error("SGP4-VER.TLE: too few element sets read");
   return c;
 }
@@ -56,38 +58,6 @@ std::vector<double> hourly(int hours) {
   std::vector<double> t;
   for (int k = 0; k <= hours; ++k) t.push_back(3600.0 * k);
   return t;
-}
-
-// Every state `evade propagate` prints (up to a track's first SGP4 error) is the grid's, bit
-// for bit, in both frames; at the instant the command stopped, the grid has the same error.
-TEST(PropagateGrid, EqualsThePropagateCommandOnSgp4Ver) {
-  for (const char* frame : {"teme", "eci"}) {
-    PropagateCatalogRequest cmd;
-    cmd.catalog = sgp4_ver();
-    cmd.span_s = 86400.0;
-    cmd.step_s = 3600.0;
-    cmd.frame = frame;
-    const PropagateCatalogResult r = run_propagate_catalog(cmd);
-    const std::vector<double> t = hourly(24);
-    const Grid g = run_grid(cmd.catalog, r.start_j2000_s, t, frame_is_j2000(frame), 2);
-    ASSERT_EQ(r.objects.size(), cmd.catalog.objects.size());
-    int errors = 0;
-    for (std::size_t i = 0; i < r.objects.size(); ++i) {
-      const CatalogTrack& tr = r.objects[i];
-      for (std::size_t k = 0; k < tr.states.size(); ++k) {
-        const std::size_t s = i * t.size() + k;
-        for (int c = 0; c < 3; ++c) {
-          ASSERT_EQ(g.r[3 * s + c], tr.states[k].r_m[c]) << tr.id << " k " << k;
-          ASSERT_EQ(g.v[3 * s + c], tr.states[k].v_mps[c]) << tr.id << " k " << k;
-        }
-      }
-      if (tr.error != Sgp4Error::kNone) {
-        ++errors;
-        EXPECT_EQ(g.err[i * t.size() + tr.states.size()], static_cast<std::int32_t>(tr.error)) << tr.id;
-      }
-    }
-    EXPECT_GT(errors, 0) << "SGP4-VER holds element sets that fail: the error path is tested";
-  }
 }
 
 // Each (object, instant) on its own: reversed instants give the reversed grid, and every
@@ -156,7 +126,7 @@ TEST(PropagateGrid, BadInputsNamed) {
   req.start_j2000_s = INFINITY;
   EXPECT_THROW(check_state_grid_request(c, req), std::invalid_argument);
   EXPECT_THROW((void)frame_is_j2000("gcrf"), std::invalid_argument);
-  const Catalog none = read_catalog("1 00005U garbage\n", "bad.tle");
+  const Catalog none = read_tle("1 00005U garbage\n", "bad.tle");
   try {
     check_state_grid_request(none, req);
     FAIL() << "empty catalog accepted";

@@ -13,6 +13,7 @@
 
 #include "evade/sgp4/catalog.hpp"
 #include "evade/sgp4/sgp4.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -21,7 +22,7 @@ Catalog shipped() {
   std::ifstream in(EVADE_TEST_SHIPPED_CATALOG);
   std::ostringstream os;
   os << in.rdbuf();
-  return read_catalog(os.str(), "synthetic-1200.tle");
+  return read_tle(os.str(), "synthetic-1200.tle");
 }
 
 TEST(RadiusBounds, SampledRadiusStaysInsideOverSevenDays) {

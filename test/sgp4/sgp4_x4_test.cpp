@@ -13,6 +13,7 @@
 
 #include "evade/sgp4/catalog.hpp"
 #include "evade/sgp4/sgp4.hpp"
+#include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::sgp4 {
 namespace {
@@ -22,7 +23,7 @@ std::vector<Sgp4Propagator> shipped_propagators(bool deep, OperationMode mode = 
   std::ostringstream os;
   os << in.rdbuf();
   std::vector<Sgp4Propagator> out;
-  for (const MeanElements& m : read_catalog(os.str(), "synthetic-1200.tle").objects) {
+  for (const MeanElements& m : read_tle(os.str(), "synthetic-1200.tle").objects) {
     Sgp4Propagator p(m, mode);
     if (p.deep_space() == deep && p.init_error() == Sgp4Error::kNone) out.push_back(p);
   }

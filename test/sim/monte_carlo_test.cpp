@@ -10,14 +10,14 @@
 
 #include "evade/config/scenario.hpp"
 #include "evade/sim/monte_carlo.hpp"
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_scenario.hpp"
 
 namespace {
 
 using namespace evade;
 
 TEST(SimMonteCarlo, NoisyAnglesOnlyP5MissAtLeast80PercentOfIdeal) {
-  sim::SimConfig c = sim::sim_config_from_scenario(config::Scenario::load("seed0"));
+  sim::SimConfig c = commands::sim_config_from_scenario(config::Scenario::load("seed0"));
   c.guidance.max_accel_mps2 = 1.0;
   c.encounter.detect_before_tca_s = 10.0;
   auto ideal_ep = sim::make_in_process_endpoint(c.guidance, true);

@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "evade/config/scenario.hpp"
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_scenario.hpp"
 #include "evade/sim/simulator.hpp"
 
 namespace {
@@ -38,7 +38,7 @@ constexpr Entry kTable2[] = {
 
 void run_table(double rate_hz, double tol_m) {
   const auto sc = evade::config::Scenario::load("seed0");
-  evade::sim::SimConfig base = evade::sim::sim_config_from_scenario(sc);
+  evade::sim::SimConfig base = evade::commands::sim_config_from_scenario(sc);
   base.guidance.rate_hz = rate_hz;
   base.sensor.rate_hz = rate_hz;
   std::printf("guidance at %.0f Hz\n", rate_hz);
@@ -70,7 +70,7 @@ TEST(Paper000Table2, AllTwelveMissDistancesWithinTwoCentimetresAtFlightRate50Hz)
 
 TEST(Paper000Table2, UnforcedEncounterIsTenSecondsAheadWithMillimetreMiss) {
   const auto sc = evade::config::Scenario::load("seed0");
-  const evade::sim::SimConfig c = evade::sim::sim_config_from_scenario(sc);
+  const evade::sim::SimConfig c = evade::commands::sim_config_from_scenario(sc);
   const evade::sim::Encounter e = evade::sim::find_nominal_encounter(c);
   ASSERT_TRUE(e.found);
   std::printf("nominal tca = %.6f s, miss = %.3f mm\n", e.tca_s, 1e3 * e.miss_m);

@@ -12,7 +12,7 @@
 
 #include "evade/config/scenario.hpp"
 #include "evade/sim/realtime_simulator.hpp"
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_scenario.hpp"
 
 namespace {
 
@@ -97,7 +97,7 @@ class VirtualLink : public sim::RealtimeLink {
 };
 
 sim::SimConfig seed0(double accel_mps2, double detect_s) {
-  sim::SimConfig c = sim::sim_config_from_scenario(config::Scenario::load("seed0"));
+  sim::SimConfig c = commands::sim_config_from_scenario(config::Scenario::load("seed0"));
   c.guidance.max_accel_mps2 = accel_mps2;
   c.encounter.detect_before_tca_s = detect_s;
   return c;

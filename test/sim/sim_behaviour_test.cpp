@@ -9,7 +9,7 @@
 
 #include "evade/config/scenario.hpp"
 #include "evade/guidance/los_geometry.hpp"
-#include "evade/sim/sim_scenario.hpp"
+#include "evade/commands/sim_scenario.hpp"
 #include "evade/sim/simulator.hpp"
 
 namespace {
@@ -18,7 +18,7 @@ using evade::Vec3;
 using namespace evade;
 
 sim::SimConfig seed0() {
-  return sim::sim_config_from_scenario(config::Scenario::load("seed0"));
+  return commands::sim_config_from_scenario(config::Scenario::load("seed0"));
 }
 
 // Homing law for the negative test: thrust along +e_θ = u̇/|u̇| (raw, no zenith flip), from
@@ -140,7 +140,7 @@ TEST(SimScenario, NonFiniteOrUnknownKeysAreRejectedWithTheKey) {
   auto load = [](const std::string& extra_key, const std::string& value) {
     config::Scenario sc = config::Scenario::load("seed0");
     sc.apply_override(extra_key + "=" + value);
-    sim::SimConfig c = sim::sim_config_from_scenario(sc);
+    sim::SimConfig c = commands::sim_config_from_scenario(sc);
     sc.check_all_used();
     c.validate();
   };

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "evade/config/scenario.hpp"
-#include "evade/threat/threat_scenario.hpp"
+#include "evade/commands/threat_scenario.hpp"
 #include "evade/threat/threat_study.hpp"
 #include "evade/threat/transfer_study.hpp"
 #include "seed1_geometry.hpp"
@@ -54,7 +54,7 @@ TEST(TransferStudy, Seed1RowsAreTheCliNumbers) {
 }
 
 TEST(ThreatStudy, Seed1DefaultRunIsTheCliNumbers) {
-  const ThreatScenario in = read_threat_scenario(config::Scenario::load("seed1"));
+  const ThreatScenario in = commands::read_threat_scenario(config::Scenario::load("seed1"));
   const ThreatStudy s = run_threat_study(in, {});
   EXPECT_DOUBLE_EQ(in.geometry.n_radps, 0.0011407009380488985);
   EXPECT_DOUBLE_EQ(s.period_s, 5508.1793111581055);
@@ -97,7 +97,7 @@ TEST(ThreatStudy, Seed1EliminationAndSweepsAreTheCliNumbersAndReportProgress) {
                         "evasion.seed=3", "elimination.tol_mps=1"}) {
     sc.apply_override(a);
   }
-  const ThreatScenario in = read_threat_scenario(sc);
+  const ThreatScenario in = commands::read_threat_scenario(sc);
   ThreatStudyRequest request;
   request.eliminate = true;
   request.sweep_dv_mps = {40.0, 160.0};

@@ -1,6 +1,7 @@
 // Conjunction assessment of one encounter: TCA refinement, covariance checks, the
-// encounter plane, the 2D Pc (quadrature), Chan's series, Alfano's maximum Pc, the
-// short-term validity test and, on request, the Monte Carlo Pc.
+// encounter plane, the Pc of every plane method of pc_methods.hpp (the 2D Pc by quadrature,
+// Chan's series, Alfano's maximum Pc), the short-term validity test and, on request, the
+// Monte Carlo Pc.
 //
 // States not at TCA (r.v != 0) are brought to the local TCA by two-body + J2 propagation of
 // both objects (covariance_propagation.hpp): Newton iteration on the range rate,
@@ -20,10 +21,12 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "evade/assessment/assess_params.hpp"
 #include "evade/assessment/encounter_plane.hpp"
 #include "evade/assessment/monte_carlo_pc.hpp"
+#include "evade/assessment/pc_methods.hpp"
 #include "evade/core/constants.hpp"
 #include "evade/core/state.hpp"
 
@@ -65,9 +68,9 @@ struct Assessment {
   std::array<double, 2> min_position_eigenvalue_m2 = {0.0, 0.0};
   EncounterPlane plane;
   PrincipalEncounter principal;
-  Pc2dResult pc_2d;
-  double pc_chan = 0.0;
-  PcMaxResult pc_max;
+  /// Every plane method's Pc (pc_methods.hpp: 2D, Chan, max), in table order; NaN when the
+  /// relative speed is zero (no encounter plane).
+  std::vector<PcValue> plane_pc;
   ShortTermCheck short_term;
   std::optional<MonteCarloResult> mc;
 };

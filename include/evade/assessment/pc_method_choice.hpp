@@ -26,16 +26,9 @@
 
 #include "evade/assessment/assess.hpp"
 #include "evade/assessment/pc_3d_nc.hpp"
+#include "evade/assessment/pc_methods.hpp"
 
 namespace evade::assessment {
-
-struct UsageFlag {
-  std::string name;       ///< "extended", "offset", "npd", "short_term", "converged"
-  double value = 0.0;     ///< the indicator [-]
-  double threshold = 0.0; ///< violated when value > threshold [-]
-  bool violated = false;
-  std::string meaning;    ///< one line for the text output
-};
 
 /// The encounter segment and conjunction span of a 3D-Nc result [s about TCA].
 struct Nc3dSpans {
@@ -45,14 +38,34 @@ struct Nc3dSpans {
 
 struct PcChoice {
   double pc = 0.0;
-  std::string method;  ///< "2d", "3d_nc" or "mc"
-  std::vector<UsageFlag> usage_2d;
-  std::vector<UsageFlag> usage_3d_nc;  ///< when 3D-Nc ran
-  std::optional<Nc3dResult> nc3d;
+  std::string method;  ///< the recommended row's name (pc_methods.hpp): "2d", "3d_nc" or "mc"
+  std::vector<PcStep> steps;         ///< the escalation's steps as they ran, in table order
+  std::optional<Nc3dResult> nc3d;    ///< when 3D-Nc ran
   std::optional<Nc3dSpans> spans;    ///< TA, TB, Ta, Tb of the 3D-Nc checks
   std::optional<MonteCarloResult> mc;  ///< when the escalation ran the Monte Carlo
   std::string why;                     ///< one line: why this method
+  /// The step of m, or nullptr when it did not run.
+  const PcStep* step(PcMethod m) const;
 };
+
+/// What an escalation step sees (pc_methods.hpp's PcMethodRow::escalate).
+struct PcStepInput {
+  const Assessment& a;
+  double hbr_m;
+  const AssessConfig& cfg;
+  const EarthModel& earth;
+  const McExecution& exec;
+};
+
+/// The escalation's steps (rows of pc_methods.hpp): the 2D value and its usage checks; 3D-Nc
+/// and its checks (c->nc3d, c->spans); the Monte Carlo over the 3D-Nc window (c->mc; the
+/// assessment's own Monte Carlo when the caller asked for one).
+PcStep escalate_2d(const PcStepInput& in, PcChoice* c);
+PcStep escalate_3d_nc(const PcStepInput& in, PcChoice* c);
+PcStep escalate_mc(const PcStepInput& in, PcChoice* c);
+
+/// A Monte Carlo's Pc as the outputs report it (its Wilson interval as the figures).
+PcValue monte_carlo_value(const MonteCarloResult& mc);
 
 /// The 2D usage checks of an assessment from states.
 std::vector<UsageFlag> usage_2d(const Assessment& a, double hbr_m, const AssessConfig& cfg,
@@ -66,9 +79,11 @@ Nc3dSpans nc3d_spans(const Assessment& a, const Nc3dResult& nc, const EarthModel
 std::vector<UsageFlag> usage_3d_nc(const Nc3dResult& nc, const Nc3dSpans& s,
                                    const AssessConfig& cfg);
 
-/// Runs the escalation on an assessment from states. exec: how its Monte Carlo runs; a Monte
-/// Carlo already in the assessment (asked for by the caller) is the escalation's, not rerun.
-/// every_method: 3D-Nc is computed (6x6 covariances) even when the 2D value is recommended.
+/// Runs the escalation on an assessment from states: the rows of pc_methods() with a step, in
+/// order, those that need 6x6 covariances only with six_by_six; the first whose usage checks
+/// hold is recommended. exec: how its Monte Carlo runs; a Monte Carlo already in the
+/// assessment (asked for by the caller) is the escalation's, not rerun. every_method: the
+/// steps marked every_method (3D-Nc) run even after an earlier recommendation.
 PcChoice choose_pc(const Assessment& a, double hbr_m, const AssessConfig& cfg,
                    const EarthModel& earth, bool six_by_six, const McExecution& exec = {},
                    bool every_method = false);

@@ -9,7 +9,7 @@
 
 #include "evade/distributed/mpi_session.hpp"
 #include "evade/sim/monte_carlo.hpp"
-#include "evade/sim/sim_command.hpp"
+#include "evade/sim/run_hooks.hpp"
 
 namespace evade::distributed {
 

@@ -1,6 +1,7 @@
 // A catalog read from text: the entries that passed every check, and one issue per rejected
 // entry (source, line, column, what was expected, what was found), so a reader never stops
-// at the first bad entry and never drops one silently.
+// at the first bad entry and never drops one silently. The TLE reader is tle_reader.hpp; the
+// CCSDS OMM and "GP" forms, and the reader of any of them, are evade/ccsds/catalog_formats.hpp.
 #pragma once
 
 #include <stdexcept>
@@ -36,15 +37,5 @@ struct ReadError : std::runtime_error {
   explicit ReadError(ReadIssue i) : std::runtime_error(i.message()), issue(std::move(i)) {}
   ReadIssue issue;
 };
-
-/// Text of the catalog formats the readers understand.
-enum class CatalogFormat { kTle, kOmmKvn, kOmmXml, kGpJson, kGpCsv };
-
-/// Guesses the format from the first non-blank character and line: '<' XML, '[' or '{'
-/// JSON, "CCSDS_OMM_VERS" KVN, a CSV header naming OBJECT_NAME or NORAD_CAT_ID, else TLE.
-CatalogFormat detect_catalog_format(const std::string& text);
-
-/// Reads text in any of the formats above.
-Catalog read_catalog(const std::string& text, const std::string& source);
 
 }  // namespace evade::sgp4

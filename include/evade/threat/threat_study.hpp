@@ -12,11 +12,24 @@
 #include <optional>
 #include <vector>
 
+#include "evade/core/constants.hpp"
 #include "evade/threat/evasion.hpp"
-#include "evade/threat/threat_scenario.hpp"
+#include "evade/threat/threat_area.hpp"
 #include "evade/threat/transfer_study.hpp"
 
 namespace evade::threat {
+
+/// The threat-area solvers' inputs, as a threat-area scenario gives them
+/// (commands::read_threat_scenario).
+struct ThreatScenario {
+  EarthModel earth;                     ///< earth.* (only μ and Re enter HCW's n)
+  ThreatGeometry geometry;              ///< n from the target's circular orbit; chaser at t0
+  ThreatOptions threat;                 ///< chaser., transfer., sweep.
+  EvasionOptions evasion;               ///< evasion.* (angles in radians)
+  double evasion_dv_mps = 20.0;         ///< evasion.dv_mps: V_E of the single optimization
+  double elimination_tol_mps = 0.05;    ///< elimination.tol_mps
+  double target_inclination_deg = 0.0;  ///< target.inclination_deg (for the record)
+};
 
 struct ThreatStudyRequest {
   bool eliminate = false;                ///< search the eliminating V_E (also per transfer time)
