@@ -14,13 +14,13 @@ bool NodeCore::admit_seq(Input in, std::int64_t seq, std::int64_t utime) noexcep
   std::int64_t gaps = 0;
   SeqTracker& tracker = seq_[index(in)];
   const std::int64_t restarts = tracker.restarts();
-  const Reason s = tracker.check(seq, utime, &gaps);
+  std::int64_t& dropped = dropped_since_accept_[index(in)];
+  const Reason s = tracker.check(seq, utime, &gaps, dropped);
   if (s != Reason::kOk) {
     counts_.add(s == Reason::kSeqJump ? Verdict::kRejected : Verdict::kStale, s);
     return false;
   }
   // Gaps are numbers never received: the ones this node dropped from its own queue were.
-  std::int64_t& dropped = dropped_since_accept_[index(in)];
   counts_.seq_gaps += gaps > dropped ? gaps - dropped : 0;
   dropped = 0;
   counts_.seq_restarts += tracker.restarts() - restarts;

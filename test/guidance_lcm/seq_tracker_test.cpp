@@ -83,5 +83,19 @@ TEST(SeqTracker, ExtremeSeqValuesNeitherOverflowNorGiveNegativeGaps) {
   EXPECT_EQ(gaps, 0);
 }
 
+// NODE-IN-4: the messages the node dropped from its own full queue widen the plausible step: a
+// burst the node could not keep (2,000 of one channel's messages dropped between two accepted
+// ones) is not a sender's jump; without them the same step is one.
+TEST(SeqTracker, OwnQueueDropsWidenThePlausibleStep) {
+  std::int64_t gaps = 0;
+  SeqTracker t(1000);
+  EXPECT_EQ(t.check(1, 1, &gaps), Reason::kOk);
+  EXPECT_EQ(t.check(2002, 2, &gaps, 2000), Reason::kOk);
+  EXPECT_EQ(gaps, 2000);
+  SeqTracker u(1000);
+  EXPECT_EQ(u.check(1, 1, &gaps), Reason::kOk);
+  EXPECT_EQ(u.check(2002, 2, &gaps), Reason::kSeqJump);
+}
+
 }  // namespace
 }  // namespace evade::guidance_lcm

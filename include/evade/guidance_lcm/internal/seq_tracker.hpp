@@ -1,7 +1,10 @@
 // Per-channel sequence-number policy (docs/GUIDANCE_NODE.md NODE-IN-4). A message is
 // classified against the last accepted seq L of its channel:
 //   seq == L                      duplicate (stale: we already have it)
-//   1 <= seq - L <= max_jump      accepted; seq - L - 1 numbers were skipped (gaps)
+//   1 <= seq - L <= max_jump + s  accepted; seq - L - 1 numbers were skipped (gaps); s is the
+//                                 number of this channel's messages the node itself dropped
+//                                 from its full queue since L (they were received: a burst the
+//                                 node could not keep must not look like a sender's jump)
 //   anything else                 a discontinuity: behind L (out of order, stale) or an
 //                                 implausible jump ahead (rejected). It is not accepted, but
 //                                 remembered as a restart candidate.
@@ -27,12 +30,16 @@ class SeqTracker {
 
   /// Classifies (seq, utime) and, if accepted, remembers it. *gaps receives the number of
   /// sequence numbers skipped before this one (0 normally, and 0 on a confirmed restart).
-  Reason check(std::int64_t seq, std::int64_t utime, std::int64_t* gaps) noexcept {
+  /// own_drops: this channel's messages the node dropped from its own queue since the last
+  /// accepted one (they widen the plausible step: see the file comment).
+  Reason check(std::int64_t seq, std::int64_t utime, std::int64_t* gaps,
+               std::int64_t own_drops = 0) noexcept {
     *gaps = 0;
     if (!have_) return accept(seq, utime);
     const std::uint64_t d = distance(last_, seq);
     if (d == 0) return Reason::kDuplicateSeq;
-    if (d <= max_jump_) {
+    const std::uint64_t slack = own_drops > 0 ? static_cast<std::uint64_t>(own_drops) : 0U;
+    if (d <= max_jump_ + slack) {
       *gaps = static_cast<std::int64_t>(d - 1);
       return accept(seq, utime);
     }
