@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <queue>
+#include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "evade/core/constants.hpp"
 #include "evade/core/gauss_kronrod.hpp"
@@ -15,24 +15,35 @@
 namespace evade::assessment {
 namespace {
 
-void check_input(const PrincipalEncounter& e, double hbr_m) {
+Pc2dStatus input_status(const PrincipalEncounter& e, double hbr_m) noexcept {
   const bool finite = std::isfinite(e.miss_x_m) && std::isfinite(e.miss_y_m) &&
                       std::isfinite(e.sigma_x_m) && std::isfinite(e.sigma_y_m) &&
                       std::isfinite(hbr_m);
-  if (!finite) throw std::invalid_argument("Pc: non-finite miss, sigma or hard-body radius");
-  if (!(e.sigma_x_m > 0.0) || !(e.sigma_y_m > 0.0)) {
-    throw std::invalid_argument("Pc: encounter-plane sigmas must be > 0 m (got " +
-                                std::to_string(e.sigma_x_m) + ", " +
-                                std::to_string(e.sigma_y_m) + ")");
-  }
-  if (!(hbr_m > 0.0)) {
-    throw std::invalid_argument("Pc: hard-body radius must be > 0 m (got " +
-                                std::to_string(hbr_m) + ")");
+  if (!finite) return Pc2dStatus::kNotFinite;
+  if (!(e.sigma_x_m > 0.0) || !(e.sigma_y_m > 0.0)) return Pc2dStatus::kBadSigma;
+  if (!(hbr_m > 0.0)) return Pc2dStatus::kBadHbr;
+  return Pc2dStatus::kOk;
+}
+
+// The ground's text of each refusal.
+void check_input(const PrincipalEncounter& e, double hbr_m) {
+  switch (input_status(e, hbr_m)) {
+    case Pc2dStatus::kNotFinite:
+      throw std::invalid_argument("Pc: non-finite miss, sigma or hard-body radius");
+    case Pc2dStatus::kBadSigma:
+      throw std::invalid_argument("Pc: encounter-plane sigmas must be > 0 m (got " +
+                                  std::to_string(e.sigma_x_m) + ", " +
+                                  std::to_string(e.sigma_y_m) + ")");
+    case Pc2dStatus::kBadHbr:
+      throw std::invalid_argument("Pc: hard-body radius must be > 0 m (got " +
+                                  std::to_string(hbr_m) + ")");
+    case Pc2dStatus::kOk:
+    case Pc2dStatus::kBadTolerance: break;
   }
 }
 
 // P(a <= Y <= b) for Y ~ N(0, s^2), without cancellation in either tail.
-double normal_interval(double a, double b, double s) {
+double normal_interval(double a, double b, double s) noexcept {
   const double k = 1.0 / (std::sqrt(2.0) * s);
   if (a >= 0.0) return 0.5 * (std::erfc(a * k) - std::erfc(b * k));
   if (b <= 0.0) return 0.5 * (std::erfc(-b * k) - std::erfc(-a * k));
@@ -42,7 +53,7 @@ double normal_interval(double a, double b, double s) {
 struct Integrand {
   PrincipalEncounter e;
   double r = 0.0;
-  double operator()(double t) const {
+  double operator()(double t) const noexcept {
     const double x = e.miss_x_m + r * std::sin(t);
     const double h = r * std::cos(t);
     const double gx = std::exp(-0.5 * x * x / (e.sigma_x_m * e.sigma_x_m)) /
@@ -51,13 +62,10 @@ struct Integrand {
   }
 };
 
-struct Panel {
-  double a = 0.0, b = 0.0, value = 0.0, error = 0.0;
-  bool operator<(const Panel& o) const { return error < o.error; }
-};
+using Panel = Pc2dPanel;
 
 // Gauss-Kronrod (7, 15) on [a, b] (core/gauss_kronrod.hpp).
-Panel gauss_kronrod(const Integrand& f, double a, double b) {
+Panel gauss_kronrod(const Integrand& f, double a, double b) noexcept {
   const double* const xk = kGk15Nodes;
   const double* const wk = kGk15Weights;
   const double* const wg = kG7Weights;
@@ -74,44 +82,83 @@ Panel gauss_kronrod(const Integrand& f, double a, double b) {
   return {a, b, k * h, std::abs((k - g) * h)};
 }
 
-// Break points in t where the integrand turns: x = 0 +- k sx and R cos t = |ym| +- k sy.
-std::vector<double> break_points(const PrincipalEncounter& e, double r) {
-  std::vector<double> t = {-0.5 * kPi, 0.5 * kPi};
+// Break points in t where the integrand turns: x = 0 +- k sx and R cos t = |ym| +- k sy; the
+// ends, up to 21 turning points and 7 eighths: at most 30, sorted and without repeats.
+struct BreakPoints {
+  std::array<double, 30> t{};
+  std::size_t n = 0;
+  void add(double v) noexcept { t[n++] = v; }
+};
+
+BreakPoints break_points(const PrincipalEncounter& e, double r) noexcept {
+  BreakPoints b;
+  b.add(-0.5 * kPi);
+  b.add(0.5 * kPi);
   for (double k : {0.0, -1.0, 1.0, -3.0, 3.0, -6.0, 6.0}) {
     const double sx = (k * e.sigma_x_m - e.miss_x_m) / r;
-    if (std::abs(sx) < 1.0) t.push_back(std::asin(sx));
+    if (std::abs(sx) < 1.0) b.add(std::asin(sx));
     const double cy = (std::abs(e.miss_y_m) + k * e.sigma_y_m) / r;
     if (cy > 0.0 && cy < 1.0) {
-      t.push_back(std::acos(cy));
-      t.push_back(-std::acos(cy));
+      b.add(std::acos(cy));
+      b.add(-std::acos(cy));
     }
   }
-  for (int i = 1; i < 8; ++i) t.push_back(-0.5 * kPi + i * kPi / 8.0);
-  std::sort(t.begin(), t.end());
-  t.erase(std::unique(t.begin(), t.end()), t.end());
-  return t;
+  for (int i = 1; i < 8; ++i) b.add(-0.5 * kPi + i * kPi / 8.0);
+  std::sort(b.t.begin(), b.t.begin() + static_cast<std::ptrdiff_t>(b.n));
+  b.n = static_cast<std::size_t>(
+      std::unique(b.t.begin(), b.t.begin() + static_cast<std::ptrdiff_t>(b.n)) - b.t.begin());
+  return b;
 }
+
+// The workspace's panels as a max-heap by error (what std::priority_queue does with
+// std::push_heap and std::pop_heap on its container).
+struct PanelHeap {
+  Pc2dPanel* p;
+  int n = 0;
+  void push(const Pc2dPanel& x) noexcept {
+    p[n++] = x;
+    std::push_heap(p, p + n);
+  }
+  Pc2dPanel pop() noexcept {
+    std::pop_heap(p, p + n);
+    return p[--n];
+  }
+};
 
 }  // namespace
 
-Pc2dResult pc_2d(const PrincipalEncounter& e, double hbr_m, double rel_tol) {
-  check_input(e, hbr_m);
-  if (!(rel_tol > 0.0)) throw std::invalid_argument("pc_2d: rel_tol must be > 0");
+const char* pc_2d_status_name(Pc2dStatus s) noexcept {
+  switch (s) {
+    case Pc2dStatus::kOk: return "ok";
+    case Pc2dStatus::kNotFinite: return "not_finite";
+    case Pc2dStatus::kBadSigma: return "bad_sigma";
+    case Pc2dStatus::kBadHbr: return "bad_hbr";
+    case Pc2dStatus::kBadTolerance: return "bad_tolerance";
+  }
+  return "?";
+}
+
+// Globally adaptive: the panel of the largest error is halved until the summed error is within
+// rel_tol of the value or the workspace is full (bounded: at most kMaxPanels - 30 halvings).
+Pc2dStatus pc_2d(const PrincipalEncounter& e, double hbr_m, double rel_tol, Pc2dWorkspace* ws,
+                 Pc2dResult* out) noexcept {
+  *out = Pc2dResult{};
+  const Pc2dStatus st = input_status(e, hbr_m);
+  if (st != Pc2dStatus::kOk) return st;
+  if (!(rel_tol > 0.0)) return Pc2dStatus::kBadTolerance;
   const Integrand f{e, hbr_m};
-  std::priority_queue<Panel> panels;
-  const std::vector<double> t = break_points(e, hbr_m);
+  PanelHeap panels{ws->panels.data()};
+  const BreakPoints t = break_points(e, hbr_m);
   double value = 0.0, error = 0.0;
-  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
-    const Panel p = gauss_kronrod(f, t[i], t[i + 1]);
+  for (std::size_t i = 0; i + 1 < t.n; ++i) {
+    const Panel p = gauss_kronrod(f, t.t[i], t.t[i + 1]);
     value += p.value;
     error += p.error;
     panels.push(p);
   }
-  constexpr int kMaxPanels = 20000;
   while (error > rel_tol * std::abs(value) && error > 1e-300 &&
-         static_cast<int>(panels.size()) < kMaxPanels) {
-    const Panel worst = panels.top();
-    panels.pop();
+         panels.n + 1 < Pc2dWorkspace::kMaxPanels) {
+    const Panel worst = panels.pop();
     const double m = 0.5 * (worst.a + worst.b);
     const Panel l = gauss_kronrod(f, worst.a, m);
     const Panel r = gauss_kronrod(f, m, worst.b);
@@ -120,7 +167,17 @@ Pc2dResult pc_2d(const PrincipalEncounter& e, double hbr_m, double rel_tol) {
     panels.push(l);
     panels.push(r);
   }
-  return {std::min(1.0, std::max(0.0, value)), error, static_cast<int>(panels.size())};
+  *out = {std::min(1.0, std::max(0.0, value)), error, panels.n};
+  return Pc2dStatus::kOk;
+}
+
+Pc2dResult pc_2d(const PrincipalEncounter& e, double hbr_m, double rel_tol) {
+  check_input(e, hbr_m);
+  if (!(rel_tol > 0.0)) throw std::invalid_argument("pc_2d: rel_tol must be > 0");
+  const auto ws = std::make_unique<Pc2dWorkspace>();
+  Pc2dResult r;
+  (void)pc_2d(e, hbr_m, rel_tol, ws.get(), &r);  // the input was checked: kOk
+  return r;
 }
 
 double pc_chan(const PrincipalEncounter& e, double hbr_m) {

@@ -15,7 +15,16 @@
 // pc_max_alfano: the largest Pc over a common scale k of the covariance (Alfano 2005,
 // "Relating Position Uncertainty to Maximum Conjunction Probability", J. Astronaut. Sci. 53),
 // found by golden-section search on log k with pc_2d.
+//
+// One implementation serves the ground and the node (docs/AUTONOMY.md AUT-4): the quadrature
+// runs on a caller's Pc2dWorkspace (a fixed heap of at most kMaxPanels panels, the same
+// push_heap/pop_heap refinement order as a priority queue) and reports bad input as a status,
+// with no allocation and no exception; the ground's pc_2d() is that computation on a workspace
+// of its own, throwing std::invalid_argument for bad input.
 #pragma once
+
+#include <array>
+#include <cstdint>
 
 namespace evade::assessment {
 
@@ -33,7 +42,34 @@ struct Pc2dResult {
   int panels = 0;          ///< panels used by the adaptive quadrature
 };
 
-/// Throws std::invalid_argument for a non-finite input, sigma <= 0 or hbr <= 0.
+enum class Pc2dStatus : std::uint8_t {
+  kOk = 0,
+  kNotFinite,     ///< a miss, a sigma or the hard-body radius is NaN or Inf
+  kBadSigma,      ///< a sigma is not > 0
+  kBadHbr,        ///< the hard-body radius is not > 0
+  kBadTolerance,  ///< rel_tol is not > 0
+};
+const char* pc_2d_status_name(Pc2dStatus s) noexcept;
+
+/// One panel of the adaptive quadrature.
+struct Pc2dPanel {
+  double a = 0.0, b = 0.0, value = 0.0, error = 0.0;
+  bool operator<(const Pc2dPanel& o) const noexcept { return error < o.error; }
+};
+/// The quadrature's memory (16 KiB): preallocate one where nothing may allocate.
+struct Pc2dWorkspace {
+  /// Panels at most: the encounters of the test suite take up to 138 (Alfano 2009 and CARA's
+  /// cases take under 40); past it the result stands with its error estimate (abs_error).
+  static constexpr int kMaxPanels = 512;
+  std::array<Pc2dPanel, kMaxPanels> panels{};
+};
+
+/// The 2D Pc into *out, on *ws (flight code: no allocation, no exception). kOk, or the first
+/// problem of the input (then *out is zero).
+Pc2dStatus pc_2d(const PrincipalEncounter& e, double hbr_m, double rel_tol, Pc2dWorkspace* ws,
+                 Pc2dResult* out) noexcept;
+/// The same on a workspace of its own. Throws std::invalid_argument for a non-finite input,
+/// sigma <= 0 or hbr <= 0.
 Pc2dResult pc_2d(const PrincipalEncounter& e, double hbr_m, double rel_tol = 1e-8);
 /// Chan's series, summed until its terms no longer change the sum.
 double pc_chan(const PrincipalEncounter& e, double hbr_m);
