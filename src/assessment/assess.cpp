@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "evade/assessment/covariance.hpp"
+#include "evade/assessment/encounter_2d.hpp"
 #include "evade/assessment/covariance_propagation.hpp"
 #include "evade/core/elements.hpp"
 #include "evade/dynamics/gravity.hpp"
@@ -46,22 +47,22 @@ void bring_to_tca(ConjunctionInput& in, const AssessConfig& cfg, Assessment& out
                               std::to_string(cfg.tca_search_s) + " s of the given states");
 }
 
+// The flight form's figures (encounter_2d.hpp: short_term_values), with the ground's reasons.
 ShortTermCheck short_term(const Assessment& a, double hbr_m, const AssessConfig& cfg,
                           const EarthModel& earth) {
   ShortTermCheck st;
-  const Vec3 y = a.plane.axes_eci.row(1).transpose();
-  const Mat3 c = a.at_tca[0].cov_eci.block<3, 3>(0, 0) + a.at_tca[1].cov_eci.block<3, 3>(0, 0);
-  const double sigma_along = std::sqrt(std::max(0.0, y.dot(c * y)));
-  st.encounter_time_s = 2.0 * (5.0 * sigma_along + hbr_m) / a.plane.rel_speed_mps;
-  st.period_s = shorter_period_s(a, earth);
-  const Mat3 cv = a.at_tca[0].cov_eci.block<3, 3>(3, 3) + a.at_tca[1].cov_eci.block<3, 3>(3, 3);
-  st.rel_speed_sigma_mps = std::sqrt(std::max(0.0, y.dot(cv * y)));
-  if (st.encounter_time_s > cfg.short_term_max_period_fraction * st.period_s) {
+  const ShortTermValues v = short_term_values(
+      a.plane, a.at_tca[0].cov_eci, a.at_tca[1].cov_eci, a.at_tca[0].state, a.at_tca[1].state,
+      hbr_m, cfg.short_term_max_period_fraction, cfg.short_term_max_vel_sigma_ratio, earth);
+  st.encounter_time_s = v.encounter_time_s;
+  st.period_s = v.period_s;
+  st.rel_speed_sigma_mps = v.rel_speed_sigma_mps;
+  if (v.time_fails) {
     st.valid = false;
     st.reason = "encounter time " + std::to_string(st.encounter_time_s) + " s exceeds " +
                 std::to_string(cfg.short_term_max_period_fraction) + " of the orbital period (" +
                 std::to_string(st.period_s) + " s): the relative motion is not rectilinear";
-  } else if (st.rel_speed_sigma_mps > cfg.short_term_max_vel_sigma_ratio * a.plane.rel_speed_mps) {
+  } else if (v.speed_fails) {
     st.valid = false;
     st.reason = "relative-speed sigma " + std::to_string(st.rel_speed_sigma_mps) +
                 " m/s exceeds " + std::to_string(cfg.short_term_max_vel_sigma_ratio) +
@@ -128,8 +129,7 @@ void run_requested_mc(const ConjunctionInput& in, const AssessConfig& cfg,
 }  // namespace
 
 double shorter_period_s(const Assessment& a, const EarthModel& earth) {
-  return std::min(orbital_period_s(a.at_tca[0].state, earth.mu_m3ps2),
-                  orbital_period_s(a.at_tca[1].state, earth.mu_m3ps2));
+  return shorter_period_s(a.at_tca[0].state, a.at_tca[1].state, earth);
 }
 
 McEncounter mc_encounter(const Assessment& a, double hbr_m, const EarthModel& earth) {

@@ -6,33 +6,26 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Eigenvalues>
-
+#include "evade/assessment/encounter_2d.hpp"
 #include "evade/core/frames.hpp"
 
 namespace evade::assessment {
 namespace {
 
+// The flight form's repair (encounter_2d.hpp), its refusals thrown with the ground's text.
 template <class M>
 M repair(const M& c, const std::string& what, bool* npd, double* min_eig) {
-  if (!c.allFinite()) throw std::invalid_argument(what + ": covariance has a non-finite entry");
-  const double scale = std::max(c.cwiseAbs().maxCoeff(), 1e-300);
-  if ((c - c.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) {
-    throw std::invalid_argument(what + ": covariance is not symmetric");
+  M out = M::Zero();
+  switch (repair_covariance_into(c, &out, npd, min_eig)) {
+    case CovarianceStatus::kNotFinite:
+      throw std::invalid_argument(what + ": covariance has a non-finite entry");
+    case CovarianceStatus::kAsymmetric:
+      throw std::invalid_argument(what + ": covariance is not symmetric");
+    case CovarianceStatus::kNoPositiveEigenvalue:
+      throw std::invalid_argument(what + ": covariance has no positive eigenvalue");
+    case CovarianceStatus::kOk: break;
   }
-  M s = 0.5 * (c + c.transpose());
-  Eigen::SelfAdjointEigenSolver<M> es(s);
-  const auto& l = es.eigenvalues();
-  *min_eig = l.minCoeff();
-  const double floor = std::max(1e-10 * l.maxCoeff(), 1e-12);
-  *npd = *min_eig <= 0.0;
-  if (!*npd) return s;
-  if (l.maxCoeff() <= 0.0) {
-    throw std::invalid_argument(what + ": covariance has no positive eigenvalue");
-  }
-  auto clipped = l;
-  for (int i = 0; i < clipped.size(); ++i) clipped(i) = std::max(clipped(i), floor);
-  return es.eigenvectors() * clipped.asDiagonal() * es.eigenvectors().transpose();
+  return out;
 }
 
 Mat6 block_rotation(const StateEci& object) {

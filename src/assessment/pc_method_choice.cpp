@@ -2,6 +2,8 @@
 // (include/evade/assessment/pc_method_choice.hpp gives the source and the indicators).
 #include "evade/assessment/pc_method_choice.hpp"
 
+#include "evade/assessment/encounter_2d.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -43,37 +45,25 @@ double distance_maximum(const KeplerOrbit& o1, const KeplerOrbit& o2, double sig
 
 std::vector<UsageFlag> usage_2d(const Assessment& a, double hbr_m, const AssessConfig& cfg,
                                 const EarthModel& earth) {
-  const Mat3 c = a.at_tca[0].cov_eci.block<3, 3>(0, 0) + a.at_tca[1].cov_eci.block<3, 3>(0, 0);
-  Eigen::SelfAdjointEigenSolver<Mat3> es(0.5 * (c + c.transpose()));
-  Vec3 l = es.eigenvalues();
-  const double clip = std::pow(1e-4 * hbr_m, 2);  // CARA's Fclip: eigenvalues below are clipped
-  for (int i = 0; i < 3; ++i) l(i) = std::max(l(i), clip);
-  const Mat3 ainv = es.eigenvectors() * l.cwiseInverse().asDiagonal() * es.eigenvectors().transpose();
-  const Vec3 r = a.at_tca[1].state.r_eci_m - a.at_tca[0].state.r_eci_m;
-  const Vec3 v = a.at_tca[1].state.v_eci_mps - a.at_tca[0].state.v_eci_mps;
-  const double vav = v.dot(ainv * v);
-  const double period = shorter_period_s(a, earth);
+  // The flight form's figures (encounter_2d.hpp: usage_2d_values), named here.
+  const Usage2dValues u = usage_2d_values(
+      a.at_tca[0].state, a.at_tca[0].cov_eci.block<3, 3>(0, 0), a.at_tca[1].state,
+      a.at_tca[1].cov_eci.block<3, 3>(0, 0), a.min_position_eigenvalue_m2[0],
+      a.min_position_eigenvalue_m2[1], hbr_m,
+      std::sqrt(2.0) * erfc_inverse(cfg.conj_duration_gamma), earth);
   std::vector<UsageFlag> f;
-  if (!(vav > 0.0)) {  // zero relative velocity: the 2D method does not apply at all
+  if (u.zero_speed) {  // zero relative velocity: the 2D method does not apply at all
     f.push_back(flag("extended", 1.0, cfg.pc2d_extended_cutoff,
                      "relative speed is zero: the conjunction has no duration bound"));
     f.push_back(flag("offset", 1.0, cfg.pc2d_offset_cutoff,
                      "relative speed is zero: no time of closest approach"));
     return f;
   }
-  const double t_min = -r.dot(ainv * v) / vav;
-  const double dtau = std::sqrt(2.0) * erfc_inverse(cfg.conj_duration_gamma) / std::sqrt(vav);
-  const double ta = t_min - dtau, tb = t_min + dtau;
-  f.push_back(flag("extended", std::min(1.0, (tb - ta) / period), cfg.pc2d_extended_cutoff,
+  f.push_back(flag("extended", u.extended, cfg.pc2d_extended_cutoff,
                    "conjunction duration / shorter orbital period"));
-  f.push_back(flag("offset", std::min(1.0, std::max(std::abs(ta), std::abs(tb)) / period),
-                   cfg.pc2d_offset_cutoff,
+  f.push_back(flag("offset", u.offset, cfg.pc2d_offset_cutoff,
                    "farthest conjunction bound from TCA / shorter orbital period"));
-  // CARA's NPDIssues: a position covariance (either object's, or the combined one) with an
-  // eigenvalue <= 0. (A zero velocity block, how a CDM says "velocity not known", is not one.)
-  const bool npd = a.min_position_eigenvalue_m2[0] <= 0.0 || a.min_position_eigenvalue_m2[1] <= 0.0 ||
-                   es.eigenvalues().minCoeff() <= 0.0;
-  f.push_back(flag("npd", npd ? 1.0 : 0.0, 0.0,
+  f.push_back(flag("npd", u.npd ? 1.0 : 0.0, 0.0,
                    "a position covariance has an eigenvalue <= 0 (repaired before the Pc)"));
   f.push_back(flag("short_term", a.short_term.valid ? 0.0 : 1.0, 0.0,
                    a.short_term.valid ? "Chan/Alfano short-term check holds" : a.short_term.reason));

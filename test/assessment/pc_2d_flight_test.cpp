@@ -2,12 +2,14 @@
 // the ground's pc_2d (one implementation: the ground's call runs the workspace version) on
 // Chan's encounter-plane cases, encounters of the Alfano 2009 set and the most elongated
 // ellipse of the test suite; Chan's published case 01; every bad input reported as a status and
-// never thrown; the panel count bounded by the workspace; nothing allocated.
+// never thrown; the panel count bounded by the workspace; nothing allocated, by the Pc nor by the
+// whole 2D assessment (encounter_2d.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
+#include "evade/assessment/encounter_2d.hpp"
 #include "evade/assessment/pc_2d.hpp"
 #include "support/counting_new.hpp"
 
@@ -70,6 +72,21 @@ TEST(Pc2dFlight, TheWorkspaceVersionAllocatesNothing) {
   const long before = g_news.load();
   for (const Case& c : kCases) (void)pc_2d(c.e, c.hbr_m, 1e-10, &ws, &r);
   EXPECT_EQ(g_news.load() - before, 0);
+}
+
+TEST(Encounter2d, AllocatesNothing) {
+  Pc2dWorkspace ws;
+  Encounter2d e;
+  const StateEci s1{Vec3(7e6, 0, 0), Vec3(0, 7546, 0)};
+  const StateEci s2{Vec3(7e6, 100, 0), Vec3(0, 0, 7546)};
+  Mat6 c = Mat6::Identity() * 1e4;
+  c(0, 0) = -1.0;  // an NPD covariance: the repair path too
+  const long before = g_news.load();
+  ASSERT_EQ(assess_encounter_2d(s1, c, s2, Mat6::Identity() * 4e4, 10.0, Encounter2dConfig{},
+                                kEarthDefault, &ws, &e),
+            Encounter2dStatus::kOk);
+  EXPECT_EQ(g_news.load() - before, 0);
+  EXPECT_TRUE(e.npd[0]);
 }
 
 }  // namespace
