@@ -6,7 +6,7 @@
 namespace evade::ccsds {
 namespace {
 
-std::string trim(const std::string& s) {
+std::string trim_kvn(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r");
   if (a == std::string::npos) return "";
   return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
@@ -58,21 +58,21 @@ struct Reader {
 };
 
 CdmItem parse_line(const std::string& raw, int line) {
-  const std::string t = trim(raw);
+  const std::string t = trim_kvn(raw);
   if (t.rfind("COMMENT", 0) == 0 && (t.size() == 7 || t[7] == ' ' || t[7] == '\t'))
-    return {"COMMENT", trim(t.substr(7)), "", line};
+    return {"COMMENT", trim_kvn(t.substr(7)), "", line};
   const auto eq = t.find('=');
   if (eq == std::string::npos)
     throw CdmError("CDM line " + std::to_string(line) + ": keyword '" + t.substr(0, 40) +
                    "': expected KEYWORD = value [unit]");
-  CdmItem it{trim(t.substr(0, eq)), trim(t.substr(eq + 1)), "", line};
+  CdmItem it{trim_kvn(t.substr(0, eq)), trim_kvn(t.substr(eq + 1)), "", line};
   if (!it.value.empty() && it.value.back() == ']') {
     const auto lb = it.value.rfind('[');
     if (lb == std::string::npos)
       throw CdmError("CDM line " + std::to_string(line) + ": keyword '" + it.key +
                      "': unit without its opening '['");
-    it.unit = trim(it.value.substr(lb + 1, it.value.size() - lb - 2));
-    it.value = trim(it.value.substr(0, lb));
+    it.unit = trim_kvn(it.value.substr(lb + 1, it.value.size() - lb - 2));
+    it.value = trim_kvn(it.value.substr(0, lb));
   }
   return it;
 }
@@ -87,7 +87,7 @@ Cdm read_cdm_kvn(const std::string& text) {
   bool first = true;
   while (std::getline(in, raw)) {
     ++line;
-    if (trim(raw).empty()) continue;
+    if (trim_kvn(raw).empty()) continue;
     CdmItem it = parse_line(raw, line);
     if (first && it.key != "CCSDS_CDM_VERS")
       throw CdmError("CDM line " + std::to_string(line) + ": keyword '" + it.key +
