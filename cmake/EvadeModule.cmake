@@ -82,7 +82,14 @@ function(evade_add_test name)
   if(T_RUN_SERIAL)
     set(serial TRUE)  # timing- or network-sensitive: never beside another test
   endif()
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+  # Cross builds (cmake/toolchains/) list a test program's tests when ctest runs, under the
+  # emulator (CMAKE_CROSSCOMPILING_EMULATOR), not at build time: the build needs no qemu, and
+  # the emulator's start-up is paid once per program.
+  set(discovery POST_BUILD)
+  if(CMAKE_CROSSCOMPILING)
+    set(discovery PRE_TEST)
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 DISCOVERY_MODE ${discovery}
     PROPERTIES TIMEOUT ${T_TIMEOUT} RUN_SERIAL ${serial})
   # Labels are set after discovery, from a file ctest includes after the discovered tests:
   # passed through gtest_discover_tests' PROPERTIES, a list of two labels ("conjunction;sgp4")
