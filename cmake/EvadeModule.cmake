@@ -16,8 +16,20 @@ endfunction()
 # flight code is compiled at -O0, so that its line and branch counts map one to one onto
 # the source: at -O1 GCC merges identical tails (two `cancel(...); return {};` blocks)
 # and the gate would count one of them as never executed.
+# The floating-point contract of flight code (docs/INTEGRATION.md, docs/GUIDANCE_NODE.md): no
+# contraction of a*b+c into a fused multiply-add, on every target. GCC contracts by default in
+# C++ wherever the CPU has FMA (aarch64, s390x; not x86-64's baseline, where the flag changes
+# no instruction), and a fused result rounds once where x86-64 rounds twice: with it off, the
+# guidance law computes the same bits on every target. The flight modules, the guidance node
+# and the test programs (which inline the same header code) get it.
+set(EVADE_FLIGHT_FP_MODULES core auth dynamics guidance autonomy assessment guidance_lcm)
+function(evade_set_flight_fp target)
+  target_compile_options(${target} PRIVATE -ffp-contract=off)
+endfunction()
+
 function(evade_set_flight_warnings target)
   evade_set_warnings(${target})
+  evade_set_flight_fp(${target})
   # Clang's -Wconversion also turns on -Wsign-conversion, which GCC's does not in C++; it
   # fires in lcm-gen's generated headers (hash = _computeHash(NULL)). The same set on both
   # compilers: sign conversion off under Clang (the fuzz configuration).
@@ -56,6 +68,9 @@ function(evade_add_module)
   endif()
   target_link_libraries(${t} PUBLIC ${M_PUBLIC_DEPS} PRIVATE ${M_PRIVATE_DEPS})
   evade_set_warnings(${t})
+  if(M_NAME IN_LIST EVADE_FLIGHT_FP_MODULES)
+    evade_set_flight_fp(${t})
+  endif()
   if(NOT M_NO_INSTALL)
     install(TARGETS ${t} EXPORT evadeTargets
             ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -71,6 +86,7 @@ function(evade_add_test name)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/test)  # test/support/
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
   evade_set_warnings(${name})
+  evade_set_flight_fp(${name})
   if(TARGET evade_test_pch)  # test/CMakeLists.txt, EVADE_TEST_PCH
     target_link_libraries(${name} PRIVATE Eigen3::Eigen)  # the header's own include path
     target_precompile_headers(${name} REUSE_FROM evade_test_pch)
