@@ -23,8 +23,11 @@ PcValue plane_max(const PrincipalEncounter& pe, double hbr_m, double /*rel_tol*/
   return {PcMethod::kMax, r.pc_max, {{"scale", r.scale}}};
 }
 
-// The table: plane methods first, then the escalation's order (2D, 3D-Nc, Monte Carlo).
-const std::vector<PcMethodRow> kPcMethods = {
+// The table: plane methods first, then the escalation's order (2D, 3D-Nc, Monte Carlo). Built on
+// first use (a function-local static), so that an allocation failure is thrown to a caller that
+// can catch it rather than before main.
+const std::vector<PcMethodRow>& method_table() {
+  static const std::vector<PcMethodRow> rows = {
     {PcMethod::k2d, "2d", "2D", "FOSTER-1992", {"abs_error", nullptr}, &plane_2d,
      &escalate_2d, "usage check", false, false},
     {PcMethod::kChan, "chan", "Chan", nullptr, {nullptr, nullptr}, &plane_chan, nullptr,
@@ -35,21 +38,23 @@ const std::vector<PcMethodRow> kPcMethods = {
      &escalate_3d_nc, "check", true, true},
     {PcMethod::kMc, "mc", "Monte Carlo", "ALFANO-2009", {"low", "high"}, nullptr, &escalate_mc,
      nullptr, false, false},
-};
+  };
+  return rows;
+}
 
 }  // namespace
 
-const std::vector<PcMethodRow>& pc_methods() { return kPcMethods; }
+const std::vector<PcMethodRow>& pc_methods() { return method_table(); }
 
 const PcMethodRow& pc_method(PcMethod m) {
-  for (const PcMethodRow& r : kPcMethods) {
+  for (const PcMethodRow& r : method_table()) {
     if (r.id == m) return r;
   }
   throw std::logic_error("pc_method: a PcMethod without its row");
 }
 
 const PcMethodRow* pc_method_named(const std::string& name) {
-  for (const PcMethodRow& r : kPcMethods) {
+  for (const PcMethodRow& r : method_table()) {
     if (name == r.name) return &r;
   }
   return nullptr;
@@ -57,7 +62,7 @@ const PcMethodRow* pc_method_named(const std::string& name) {
 
 std::vector<PcValue> plane_pc_values(const PrincipalEncounter& pe, double hbr_m, double rel_tol) {
   std::vector<PcValue> v;
-  for (const PcMethodRow& r : kPcMethods) {
+  for (const PcMethodRow& r : method_table()) {
     if (r.from_plane != nullptr) v.push_back(r.from_plane(pe, hbr_m, rel_tol));
   }
   return v;
@@ -66,7 +71,7 @@ std::vector<PcValue> plane_pc_values(const PrincipalEncounter& pe, double hbr_m,
 std::vector<PcValue> undefined_plane_pc_values() {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<PcValue> v;
-  for (const PcMethodRow& r : kPcMethods) {
+  for (const PcMethodRow& r : method_table()) {
     if (r.from_plane == nullptr) continue;
     PcValue u{r.id, nan, {}};
     for (const char* f : r.figures) {

@@ -2,6 +2,7 @@
 #include "evade/autonomy/orbit_stm.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace evade::autonomy {
 namespace {
@@ -108,7 +109,7 @@ bool propagate_stm(StateStm* s, double dt_s, double h_max_s, const EarthModel& e
     t = rk4_step_stm(t, h, earth);
     if (!physical(t.x_eci)) return false;
   }
-  *s = t;
+  *s = std::move(t);
   return true;
 }
 
