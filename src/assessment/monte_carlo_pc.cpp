@@ -139,8 +139,11 @@ long block_size(const MonteCarloOptions& opt, long b) {
 long pc_monte_carlo_block(const McEncounter& e, const MonteCarloOptions& opt, long block) {
   const Mat6 l1 = square_root(e.cov1_eci), l2 = square_root(e.cov2_eci);
   const Vec6 m1 = e.obj1.stacked(), m2 = e.obj2.stacked();
+  // The block number as 64 bits whatever the width of long (32 bits on armhf): the same seeds,
+  // hence the same samples, on every target.
+  const auto block_u64 = static_cast<std::uint64_t>(block);
   std::seed_seq seq{static_cast<std::uint32_t>(opt.seed), static_cast<std::uint32_t>(opt.seed >> 32),
-                    static_cast<std::uint32_t>(block), static_cast<std::uint32_t>(block >> 32)};
+                    static_cast<std::uint32_t>(block_u64), static_cast<std::uint32_t>(block_u64 >> 32)};
   std::mt19937_64 rng(seq);
   std::normal_distribution<double> normal(0.0, 1.0);
   const double period = std::min(orbital_period_s(e.obj1, e.earth.mu_m3ps2),

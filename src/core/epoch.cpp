@@ -3,6 +3,7 @@
 #include "evade/core/epoch.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 
@@ -16,10 +17,10 @@ int days_in_month(int year, int month) {
 }
 
 // Julian day number of the civil date at 12:00 (Fliegel & Van Flandern).
-long julian_day_number(int y, int m, int d) {
-  const long a = (14 - m) / 12;
-  const long yy = y + 4800 - a;
-  const long mm = m + 12 * a - 3;
+std::int64_t julian_day_number(int y, int m, int d) {
+  const std::int64_t a = (14 - m) / 12;
+  const std::int64_t yy = y + 4800 - a;
+  const std::int64_t mm = m + 12 * a - 3;
   return d + (153 * mm + 2) / 5 + 365 * yy + yy / 4 - yy / 100 + yy / 400 - 32045;
 }
 
@@ -45,14 +46,14 @@ void validate(const CalendarUtc& c) {
 
 double julian_date_from_calendar(const CalendarUtc& c) {
   validate(c);
-  const long jdn = julian_day_number(c.year, c.month, c.day);
+  const std::int64_t jdn = julian_day_number(c.year, c.month, c.day);
   return static_cast<double>(jdn) - 0.5 + (c.hour * 3600.0 + c.minute * 60.0 + c.second) / 86400.0;
 }
 
 double seconds_since_j2000_from_calendar(const CalendarUtc& c) {
   validate(c);
   // Integer days first so the seconds keep full precision (no 2.45e6-day offset rounding).
-  const long days = julian_day_number(c.year, c.month, c.day) - 2451545L;
+  const std::int64_t days = julian_day_number(c.year, c.month, c.day) - 2451545L;
   return static_cast<double>(days) * 86400.0 - 43200.0 + c.hour * 3600.0 + c.minute * 60.0 +
          c.second;
 }
@@ -63,22 +64,22 @@ CalendarUtc calendar_from_seconds_since_j2000(double t_s) {
   const double since_midnight_2000 = t_s + 43200.0;
   const double day_floor = std::floor(since_midnight_2000 / 86400.0);
   double sec_of_day = since_midnight_2000 - day_floor * 86400.0;
-  long jdn = static_cast<long>(day_floor) + 2451545L;
+  std::int64_t jdn = static_cast<std::int64_t>(day_floor) + 2451545L;
   if (sec_of_day >= 86400.0) {  // rounding guard
     sec_of_day -= 86400.0;
     ++jdn;
   }
   // Inverse Fliegel & Van Flandern.
-  long l = jdn + 68569;
-  const long n = 4 * l / 146097;
+  std::int64_t l = jdn + 68569;
+  const std::int64_t n = 4 * l / 146097;
   l = l - (146097 * n + 3) / 4;
-  const long i = 4000 * (l + 1) / 1461001;
+  const std::int64_t i = 4000 * (l + 1) / 1461001;
   l = l - 1461 * i / 4 + 31;
-  const long j = 80 * l / 2447;
-  const long day = l - 2447 * j / 80;
+  const std::int64_t j = 80 * l / 2447;
+  const std::int64_t day = l - 2447 * j / 80;
   l = j / 11;
-  const long month = j + 2 - 12 * l;
-  const long year = 100 * (n - 49) + i + l;
+  const std::int64_t month = j + 2 - 12 * l;
+  const std::int64_t year = 100 * (n - 49) + i + l;
   CalendarUtc c;
   c.year = static_cast<int>(year);
   c.month = static_cast<int>(month);

@@ -52,7 +52,7 @@ void from_lcm(const evade_guidance_status_t& m, guidance::GuidanceStatus* out) n
   out->zem_m = m.zem_m;
   out->t_go_s = m.t_go_s;
   out->dv_used_mps = m.dv_used_mps;
-  out->cycles = static_cast<long>(m.cycles);
+  out->cycles = static_cast<std::int64_t>(m.cycles);
 }
 
 void to_lcm(const guidance::AnglesMeasurement& a, std::int64_t seq, evade_angles_t* out) noexcept {

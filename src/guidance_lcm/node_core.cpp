@@ -17,6 +17,11 @@
 namespace evade::guidance_lcm::internal {
 namespace {
 
+// The node reads its clocks through timespec: a 32-bit time_t would end in January 2038, within
+// a spacecraft's life (cmake/toolchains/armhf-linux-gnu.cmake builds 32-bit ARM with
+// _TIME_BITS=64; a toolchain file of your own must too).
+static_assert(sizeof(time_t) >= 8, "evade's guidance node needs a 64-bit time_t (-D_TIME_BITS=64)");
+
 std::int64_t monotonic_us() noexcept {
   timespec ts{};
   (void)clock_gettime(CLOCK_MONOTONIC, &ts);  // CLOCK_MONOTONIC always exists: cannot fail

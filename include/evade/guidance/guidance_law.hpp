@@ -116,12 +116,12 @@ struct GuidanceStatus {
   double t_go_s = 0.0;                ///< eq. 12, when range is known and closing
   double dv_used_mps = 0.0;
   double burn_s = 0.0;
-  long cycles = 0;
-  long meas_accepted = 0;
-  long meas_rejected = 0;             ///< beyond the chi-square gate
-  long meas_invalid = 0;              ///< flagged valid but malformed, or flagged invalid
-  long filter_reinits = 0;
-  long watchdog_cycles = 0;           ///< cycles held SAFE by the watchdog verdict
+  std::int64_t cycles = 0;
+  std::int64_t meas_accepted = 0;
+  std::int64_t meas_rejected = 0;             ///< beyond the chi-square gate
+  std::int64_t meas_invalid = 0;              ///< flagged valid but malformed, or flagged invalid
+  std::int64_t filter_reinits = 0;
+  std::int64_t watchdog_cycles = 0;           ///< cycles held SAFE by the watchdog verdict
 };
 
 /// Defaults here; unit, range and meaning of every field in guidance_params.hpp (the one

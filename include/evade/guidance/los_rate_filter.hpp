@@ -77,9 +77,9 @@ class LosRateFilter {
   double last_nis() const noexcept { return last_nis_; }
   /// Unit LOS of the last measurement given to update() (whatever became of it).
   const Vec3& last_measured_u_eci() const noexcept { return z_; }
-  long accepted() const noexcept { return accepted_; }
-  long rejected() const noexcept { return rejected_; }
-  long reinitializations() const noexcept { return reinits_; }
+  std::int64_t accepted() const noexcept { return accepted_; }
+  std::int64_t rejected() const noexcept { return rejected_; }
+  std::int64_t reinitializations() const noexcept { return reinits_; }
   int updates_since_init() const noexcept { return updates_since_init_; }
   const LosFilterConfig& config() const noexcept { return cfg_; }
 
@@ -113,9 +113,9 @@ class LosRateFilter {
   double last_nis_ = 0.0;
   Vec3 z_ = Vec3::UnitX();  // unit LOS of the last measurement
   Vec3 zd_ = Vec3::Zero();  // its rate from the measured angle rates (when it has them)
-  long accepted_ = 0;
-  long rejected_ = 0;
-  long reinits_ = 0;
+  std::int64_t accepted_ = 0;
+  std::int64_t rejected_ = 0;
+  std::int64_t reinits_ = 0;
   int updates_since_init_ = 0;
   int consecutive_rejects_ = 0;
 };
