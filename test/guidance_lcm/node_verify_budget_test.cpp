@@ -39,6 +39,11 @@ TEST(NodeVerifyBudget, BudgetBoundsTheWorkOfAFloodAndRefillsEachCycle) {
 // ground uplinks: the plan is verified and flown on its first transmission.
 TEST(NodeVerifyBudget, SensorFloodDoesNotSpendTheCommandsBudget) {
   NodeConfig cfg;
+  // The drain's wall-time bound (node.max_drain_s, 10 ms) is not what this test is about, and
+  // what fits in it is the machine's speed (under qemu-user the verifications take several
+  // times longer than natively): 1 s, so the count budgets alone decide. The time bound has
+  // its own test (NodeCycle.DrainStopsAtItsWallTimeBoundAndLeavesTheRestForTheNext).
+  cfg.max_drain_s = 1.0;
   cfg.auth.nav_required = cfg.auth.angles_required = true;
   Rig rig(cfg);
   evade_nav_state_t nav{};
@@ -60,6 +65,11 @@ TEST(NodeVerifyBudget, SensorFloodDoesNotSpendTheCommandsBudget) {
 // and a genuine plan and arm in the same cycle go through.
 TEST(NodeVerifyBudget, EveryChannelFloodedAtOnceStillLetsGenuineCommandsThrough) {
   NodeConfig cfg;
+  // The drain's wall-time bound (node.max_drain_s, 10 ms) is not what this test is about, and
+  // what fits in it is the machine's speed (under qemu-user the verifications take several
+  // times longer than natively): 1 s, so the count budgets alone decide. The time bound has
+  // its own test (NodeCycle.DrainStopsAtItsWallTimeBoundAndLeavesTheRestForTheNext).
+  cfg.max_drain_s = 1.0;
   cfg.auth.nav_required = cfg.auth.angles_required = cfg.auth.clock_required = true;
   cfg.lockstep = true;
   Rig rig(cfg);
