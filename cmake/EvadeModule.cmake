@@ -27,6 +27,16 @@ function(evade_set_flight_fp target)
   target_compile_options(${target} PRIVATE -ffp-contract=off)
 endfunction()
 
+# The stack report (scripts/stack_check, docs/GUIDANCE_NODE.md NODE-RT-6): with
+# EVADE_STACK_USAGE, GCC writes each flight function's frame (-fstack-usage, .su) and each
+# translation unit's call graph with the frames (-fcallgraph-info=su, .ci) beside its object.
+# Neither changes the code generated.
+function(evade_set_stack_usage target)
+  if(EVADE_STACK_USAGE AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    target_compile_options(${target} PRIVATE -fstack-usage -fcallgraph-info=su)
+  endif()
+endfunction()
+
 function(evade_set_flight_warnings target)
   evade_set_warnings(${target})
   evade_set_flight_fp(${target})
@@ -70,6 +80,7 @@ function(evade_add_module)
   evade_set_warnings(${t})
   if(M_NAME IN_LIST EVADE_FLIGHT_FP_MODULES)
     evade_set_flight_fp(${t})
+    evade_set_stack_usage(${t})
   endif()
   if(NOT M_NO_INSTALL)
     install(TARGETS ${t} EXPORT evadeTargets
