@@ -23,10 +23,12 @@ PcValue plane_max(const PrincipalEncounter& pe, double hbr_m, double /*rel_tol*/
   return {PcMethod::kMax, r.pc_max, {{"scale", r.scale}}};
 }
 
+}  // namespace
+
 // The table: plane methods first, then the escalation's order (2D, 3D-Nc, Monte Carlo). Built on
 // first use (a function-local static), so that an allocation failure is thrown to a caller that
 // can catch it rather than before main.
-const std::vector<PcMethodRow>& method_table() {
+const std::vector<PcMethodRow>& pc_methods() {
   static const std::vector<PcMethodRow> rows = {
     {PcMethod::k2d, "2d", "2D", "FOSTER-1992", {"abs_error", nullptr}, &plane_2d,
      &escalate_2d, "usage check", false, false},
@@ -42,19 +44,15 @@ const std::vector<PcMethodRow>& method_table() {
   return rows;
 }
 
-}  // namespace
-
-const std::vector<PcMethodRow>& pc_methods() { return method_table(); }
-
 const PcMethodRow& pc_method(PcMethod m) {
-  for (const PcMethodRow& r : method_table()) {
+  for (const PcMethodRow& r : pc_methods()) {
     if (r.id == m) return r;
   }
   throw std::logic_error("pc_method: a PcMethod without its row");
 }
 
 const PcMethodRow* pc_method_named(const std::string& name) {
-  for (const PcMethodRow& r : method_table()) {
+  for (const PcMethodRow& r : pc_methods()) {
     if (name == r.name) return &r;
   }
   return nullptr;
@@ -62,7 +60,7 @@ const PcMethodRow* pc_method_named(const std::string& name) {
 
 std::vector<PcValue> plane_pc_values(const PrincipalEncounter& pe, double hbr_m, double rel_tol) {
   std::vector<PcValue> v;
-  for (const PcMethodRow& r : method_table()) {
+  for (const PcMethodRow& r : pc_methods()) {
     if (r.from_plane != nullptr) v.push_back(r.from_plane(pe, hbr_m, rel_tol));
   }
   return v;
@@ -71,7 +69,7 @@ std::vector<PcValue> plane_pc_values(const PrincipalEncounter& pe, double hbr_m,
 std::vector<PcValue> undefined_plane_pc_values() {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<PcValue> v;
-  for (const PcMethodRow& r : method_table()) {
+  for (const PcMethodRow& r : pc_methods()) {
     if (r.from_plane == nullptr) continue;
     PcValue u{r.id, nan, {}};
     for (const char* f : r.figures) {

@@ -118,10 +118,10 @@ struct GuidanceStatus {
   double burn_s = 0.0;
   std::int64_t cycles = 0;
   std::int64_t meas_accepted = 0;
-  std::int64_t meas_rejected = 0;             ///< beyond the chi-square gate
-  std::int64_t meas_invalid = 0;              ///< flagged valid but malformed, or flagged invalid
+  std::int64_t meas_rejected = 0;     ///< beyond the chi-square gate
+  std::int64_t meas_invalid = 0;      ///< flagged valid but malformed, or flagged invalid
   std::int64_t filter_reinits = 0;
-  std::int64_t watchdog_cycles = 0;           ///< cycles held SAFE by the watchdog verdict
+  std::int64_t watchdog_cycles = 0;   ///< cycles held SAFE by the watchdog verdict
 };
 
 /// Defaults here; unit, range and meaning of every field in guidance_params.hpp (the one
