@@ -1,7 +1,8 @@
-// Registering the parameter flags of evade/config/param_flags.hpp on a CLI11 command, for
-// both executables. The option's help, type name and range come from the key's declaration;
-// a given value is checked at parse time (exit 2 naming the flag, the key and the allowed
-// range) and appended to the command's overrides as "key=value".
+// Registering the parameter flags (evade/config/param_flags.hpp) on a CLI11 command, for
+// both executables. The flag, its aliases, help, type name and range come from the
+// parameter's row in its module's table (with_flag); a given value is checked at parse time
+// (exit 2 naming the flag, the key and the allowed range) and appended to the command's
+// values as a double (ParamValue): no text form between argv and the reader.
 #pragma once
 
 #include <cstddef>
@@ -12,21 +13,25 @@
 #include <CLI/CLI.hpp>
 
 #include "evade/config/param_flags.hpp"
+#include "evade/config/read_params.hpp"
 #include "evade/core/param.hpp"
 
 namespace evade::cli {
 
-/// Adds the flag of `key` (declared by spec) to app, with its aliases not already taken on
-/// app. Each given value lands in *overrides (which must outlive parsing). Throws
-/// std::logic_error when the key has no row or the row disagrees with spec.
-inline CLI::Option* add_param_flag(CLI::App& app, const std::string& key, const ParamSpec& spec,
-                                   std::vector<std::string>* overrides) {
-  const config::ParamFlagRow* row = config::find_param_flag(key);
-  if (row == nullptr) throw std::logic_error("no flag declared for " + key);
-  const std::string problem = config::param_flag_problem(*row, spec);
+/// Adds the flag declared with the row of `key` in table (rows' keys below prefix) to app,
+/// with its aliases not already taken on app. Each given value lands in *values (which must
+/// outlive parsing). Throws std::logic_error when the key has no row, the row declares no
+/// flag, or the flag disagrees with the key.
+template <class Cfg>
+CLI::Option* add_param_flag(CLI::App& app, const ParamTable<Cfg>& table, const std::string& prefix,
+                            const std::string& key, std::vector<ParamValue>* values) {
+  const ParamSpec* found = config::find_param_spec(table, prefix, key);
+  if (found == nullptr) throw std::logic_error("no declaration of " + key);
+  const ParamSpec spec = *found;
+  const std::string problem = config::param_flag_problem(key, spec);
   if (!problem.empty()) throw std::logic_error(problem);
-  std::string names = row->flag;
-  const std::string aliases = row->aliases;
+  std::string names = spec.flag;
+  const std::string aliases = spec.aliases == nullptr ? "" : spec.aliases;
   for (std::size_t b = 0; !aliases.empty() && b <= aliases.size();) {
     const std::size_t e = std::min(aliases.find(',', b), aliases.size());
     const std::string a = aliases.substr(b, e - b);
@@ -37,12 +42,11 @@ inline CLI::Option* add_param_flag(CLI::App& app, const std::string& key, const 
                            param_allowed_text(spec);
   CLI::Option* opt = app.add_option_function<std::string>(
       names,
-      [row, spec, overrides](const std::string& text) {
+      [key, spec, values](const std::string& text) {
         try {
-          overrides->push_back(config::param_override_text(row->key,
-                                                           config::param_flag_value(*row, spec, text)));
+          values->push_back(ParamValue{key, config::param_flag_value(key, spec, text)});
         } catch (const std::invalid_argument& e) {
-          throw CLI::ValidationError(row->flag, e.what());
+          throw CLI::ValidationError(spec.flag, e.what());
         }
       },
       help);

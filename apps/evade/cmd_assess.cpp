@@ -32,6 +32,7 @@ using namespace evade::commands;
 
 struct Options {
   CommonOptions common;  // --scenario, --set, --json
+  std::vector<ParamValue> params;  // --window-s, typed (evade/config/param_flags.hpp)
   std::string cdm, plane;
   double hbr_m = 0.0;
   long mc = 0;
@@ -49,9 +50,13 @@ AssessRequest plane_request(const std::string& plane) {
 }
 
 AssessRequest states_request(const Options& o) {
-  if (!o.common.scenario.empty()) return read_assess_request(load_scenario(o.common));
-  config::Scenario sc = config::Scenario::empty("--cdm");
-  for (const auto& a : o.common.sets) sc.apply_override(a);
+  config::Scenario sc =
+      o.common.scenario.empty() ? config::Scenario::empty("--cdm") : load_scenario(o.common);
+  if (o.common.scenario.empty()) {
+    for (const auto& a : o.common.sets) sc.apply_override(a);
+  }
+  for (const ParamValue& v : o.params) sc.set_value(v);
+  if (!o.common.scenario.empty()) return read_assess_request(sc);
   return read_assess_request_cdm(sc, read_text_file(o.cdm, "--cdm"), o.cdm, o.hbr_m);
 }
 
@@ -59,7 +64,7 @@ int run(const Options& o) {
   const int sources = !o.common.scenario.empty() + !o.cdm.empty() + !o.plane.empty();
   if (sources != 1)
     throw std::invalid_argument("give exactly one of --scenario, --cdm, --encounter-plane");
-  if (!o.plane.empty() && !o.common.sets.empty()) {
+  if (!o.plane.empty() && (!o.common.sets.empty() || !o.params.empty())) {
     throw std::invalid_argument("--set and --window-s do not apply to --encounter-plane (no "
                                 "states: the 2D Pc only)");
   }
@@ -92,9 +97,7 @@ Runner setup(CLI::App& app) {
   app.add_option("--seed", o->seed, "Monte Carlo seed [-]")->capture_default_str();
   app.add_option("--threads", o->threads, "Monte Carlo worker threads [-] (default: all cores)")
       ->check(CLI::Range(1, 256));
-  const ParamSpec* window = config::find_param_spec(assess_params(), "assessment.", "assessment.window_s");
-  if (window == nullptr) throw std::logic_error("no declaration of assessment.window_s");
-  (void)add_param_flag(app, "assessment.window_s", *window, &o->common.sets);
+  (void)add_param_flag(app, assess_params(), "assessment.", "assessment.window_s", &o->params);
   app.add_flag("--json", o->common.json, "print a machine-readable JSON result on stdout");
   return [o]() { return run(*o); };
 }

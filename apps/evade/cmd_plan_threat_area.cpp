@@ -33,7 +33,7 @@ using namespace evade::commands;
 
 struct ThreatCmdOptions {
   CommonOptions common;
-  std::vector<std::string> param_overrides;  ///< --dv-mps, --dt-transfer-s, --impulses
+  std::vector<ParamValue> param_values;  ///< --dv-mps, --dt-transfer-s, --impulses (typed)
   unsigned seed = 0;
   bool eliminate = false;
   std::vector<double> sweep_dv;
@@ -47,9 +47,7 @@ struct ThreatCmdOptions {
 // override, checked against its key's declaration.
 void add_parameter_flags(CLI::App& app, ThreatCmdOptions& o) {
   const auto add = [&](const auto& table, const char* key) {
-    const ParamSpec* spec = config::find_param_spec(table, "", key);
-    if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
-    (void)add_param_flag(app, key, *spec, &o.param_overrides);  // registered on app
+    (void)add_param_flag(app, table, "", key, &o.param_values);  // registered on app
   };
   add(evasion_params(), "evasion.dv_mps");
   add(threat_option_params(), "transfer.dt_s");
@@ -103,7 +101,7 @@ bool write_plot(const std::string& png, const nlohmann::json& j) {
 
 int run_command(const ThreatCmdOptions& o) {
   config::Scenario sc = load_scenario(o.common);
-  for (const std::string& kv : o.param_overrides) sc.apply_override(kv);
+  for (const ParamValue& v : o.param_values) sc.set_value(v);
   ThreatAreaRequest req = read_threat_area_request(sc);
   if (o.seed_opt->count() > 0) req.scenario.evasion.seed = o.seed;
   req.study.eliminate = o.eliminate;

@@ -128,7 +128,7 @@ int run(const Options& o) {
   refuse_inapplicable(o);
   if (!o.catalog.tle_path.empty() || !o.catalog.omm_path.empty()) return run_catalog(o);
   config::Scenario sc = load_scenario(o.common);
-  for (const std::string& kv : o.catalog.param_overrides) sc.apply_override(kv);  // flags win
+  for (const ParamValue& v : o.catalog.param_values) sc.set_value(v);  // flags win
   ScreenObjectsRequest req = objects_request(o, sc);
   req.validate();
   create_cdm_dir(req.cdm.dir);
@@ -153,9 +153,7 @@ int run(const Options& o) {
 // scenario's keys.
 void add_parameter_flags(CLI::App& app, CatalogScreenOptions& c) {
   const auto add = [&](const auto& table, const char* prefix, const char* key) {
-    const ParamSpec* spec = config::find_param_spec(table, prefix, key);
-    if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
-    (void)add_param_flag(app, key, *spec, &c.param_overrides);  // registered on app
+    (void)add_param_flag(app, table, prefix, key, &c.param_values);  // registered on app
   };
   add(screen_scenario_params(), "", "span_s");
   add(screen_options_params(), "robust.", "robust.threshold_m");

@@ -17,7 +17,7 @@ int run_catalog_screen(const CatalogScreenOptions& o) {
   commands::ScreenCatalogRequest req;
   req.source = o.tle_path.empty() ? o.omm_path : o.tle_path;
   req.primary_norad = o.primary_norad;
-  commands::apply_param_overrides(o.param_overrides, &req);
+  commands::apply_param_values(o.param_values, &req);
   req.start_utc = o.start_utc;
   req.threads = o.threads;
   req.prefilter = !o.no_prefilter;

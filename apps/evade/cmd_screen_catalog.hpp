@@ -14,8 +14,8 @@ struct CatalogScreenOptions {
   std::string tle_path;      ///< --tle: TLE or 3LE text
   std::string omm_path;      ///< --omm: OMM KVN/XML or GP JSON/CSV (detected from the text)
   long primary_norad = -1;   ///< --primary: screen this object against the catalog
-  /// --span-s, --threshold-m, --step-s as "key=value" (evade/config/param_flags.hpp)
-  std::vector<std::string> param_overrides;
+  /// --span-s, --threshold-m, --step-s, typed (evade/config/param_flags.hpp)
+  std::vector<ParamValue> param_values;
   std::string start_utc;     ///< --start (empty: the latest element epoch)
   int threads = 0;           ///< 0: hardware concurrency
   bool no_prefilter = false; ///< --no-prefilter: with --primary, propagate every object

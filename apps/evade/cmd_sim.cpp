@@ -45,8 +45,8 @@ using namespace evade;
 
 struct SimOptions {
   cli::CommonOptions common;
-  /// The parameter flags given, as "key=value" (evade/config/param_flags.hpp).
-  std::vector<std::string> param_overrides;
+  /// The parameter flags given, typed (evade/config/param_flags.hpp).
+  std::vector<ParamValue> param_values;
   bool no_rates = false;
   int runs = 0;
   long long seed = 1;
@@ -70,11 +70,11 @@ std::string num(double v) {
   return os.str();
 }
 
-// The scenario with the parameter flags written into it as overrides (then the sensor rule:
+// The scenario with the parameter flags' values given to it typed (then the sensor rule:
 // sim_overrides.hpp).
 config::Scenario scenario_with_flags(const SimOptions& o) {
   config::Scenario sc = cli::load_scenario(o.common);
-  commands::apply_sim_overrides({o.param_overrides, o.no_rates}, &sc);
+  commands::apply_sim_overrides({o.param_values, o.no_rates}, &sc);
   return sc;
 }
 
@@ -208,16 +208,15 @@ int run_sim(const SimOptions& o) {
   return 0;
 }
 
-// The parameter flags (evade/config/param_flags.hpp), each declared by its key's table; a
-// given value becomes a scenario override. sim's old --rate-hz (the sensor rate) is refused.
+// The parameter flags (evade/config/param_flags.hpp), each declared with its key's row; a
+// given value reaches the scenario reader typed. sim's old --rate-hz (the sensor rate) is
+// refused.
 void add_parameter_flags(CLI::App& app, SimOptions& o) {
   std::size_t n_retired = 0;
   const config::RetiredFlag* retired = config::sim_retired_flags(&n_retired);
   cli::add_retired_flags(app, retired, n_retired);
   const auto add = [&](const auto& table, const char* prefix, const char* key) {
-    const ParamSpec* spec = config::find_param_spec(table, prefix, key);
-    if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
-    return cli::add_param_flag(app, key, *spec, &o.param_overrides);
+    return cli::add_param_flag(app, table, prefix, key, &o.param_values);
   };
   add(guidance::guidance_params(), "guidance.", "guidance.max_accel_mps2");
   add(sim::sim_params(), "", "encounter.detect_before_tca_s");

@@ -24,10 +24,8 @@ void add_cdm_out_options(CLI::App& app, CdmOutOptions& o) {
                  "with --cdm-out: assumed RTN position sigmas R,T,N [m] of every object; the CDMs then carry a Pc");
   app.add_option("--hbr-m", o.hbr_m, "with --cdm-out: hard-body radius for the Pc [m] (default: the objects' radii)")
       ->check(CLI::PositiveNumber);
-  const ParamSpec* spec =
-      config::find_param_spec(assessment::assess_params(), "assessment.", "assessment.mc_max_samples");
-  if (spec == nullptr) throw std::logic_error("no declaration of assessment.mc_max_samples");
-  (void)add_param_flag(app, "assessment.mc_max_samples", *spec, &o.assess_sets);
+  (void)add_param_flag(app, assessment::assess_params(), "assessment.",
+                       "assessment.mc_max_samples", &o.assess_values);
 }
 
 commands::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
@@ -39,9 +37,9 @@ commands::ScreenCdmOptions screen_cdm_options(const CdmOutOptions& o) {
   c.hbr_m = o.hbr_m;
   // The assessment flags, read through the assessment table (checked when parsed).
   config::Scenario sets = config::Scenario::empty("--mc-max-samples");
-  for (const std::string& s : o.assess_sets) sets.apply_override(s);
+  for (const ParamValue& v : o.assess_values) sets.set_value(v);
   config::read_params(sets, "assessment.", assessment::assess_params(), &c.assess);
-  c.assess_given = !o.assess_sets.empty();
+  c.assess_given = !o.assess_values.empty();
   c.sink = [](const commands::ScreenCdmFile& m) { write_cdm_file(m); };  // as each is made
   return c;
 }

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "evade/commands/screen_cdms.hpp"
+#include "evade/core/param.hpp"
 
 namespace evade::cli {
 
@@ -19,7 +20,7 @@ struct CdmOutOptions {
   std::string format = "kvn";   ///< --cdm-format kvn|xml
   std::string cov_sigma;        ///< --cov-rtn-sigma-m R,T,N (empty: covariance not known)
   double hbr_m = 0.0;           ///< --hbr-m (0: the objects' radii where known)
-  std::vector<std::string> assess_sets;  ///< --mc-max-samples as "assessment.KEY=VALUE"
+  std::vector<ParamValue> assess_values;  ///< --mc-max-samples, typed
 };
 
 void add_cdm_out_options(CLI::App& app, CdmOutOptions& o);

@@ -19,22 +19,14 @@ namespace evade::node {
 
 namespace {
 
-template <class Cfg>
-void add_table_flag(CLI::App& app, const ParamTable<Cfg>& table, const char* prefix,
-                    const char* key, NodeOptions& o) {
-  const ParamSpec* spec = config::find_param_spec(table, prefix, key);
-  if (spec == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
-  (void)cli::add_param_flag(app, key, *spec, &o.param_overrides);  // registered on app
-}
-
 // The flags of the parameters the node reads (evade/config/param_flags.hpp): guidance.* and
-// node.* keys, declared in their tables.
+// node.* keys, each declared with its row.
 void add_param_flags(CLI::App& app, NodeOptions& o) {
   for (const char* key : {"guidance.rate_hz", "guidance.stale_limit_s", "guidance.max_accel_mps2"}) {
-    add_table_flag(app, guidance::guidance_params(), "guidance.", key, o);
+    (void)cli::add_param_flag(app, guidance::guidance_params(), "guidance.", key, &o.param_values);
   }
   for (const char* key : {"node.status_divider", "node.queue_capacity"}) {
-    add_table_flag(app, guidance_lcm::node_params(), "node.", key, o);
+    (void)cli::add_param_flag(app, guidance_lcm::node_params(), "node.", key, &o.param_values);
   }
 }
 
@@ -101,9 +93,9 @@ void read_node_params(const config::Scenario& sc, guidance_lcm::NodeConfig* c) {
 
 // The parameter flags given, read through their keys' tables (already checked at parse).
 void apply_flags(const NodeOptions& o, guidance_lcm::NodeConfig* c) {
-  if (o.param_overrides.empty()) return;
+  if (o.param_values.empty()) return;
   config::Scenario flags = config::Scenario::empty("command-line flags");
-  for (const std::string& kv : o.param_overrides) flags.apply_override(kv);
+  for (const ParamValue& v : o.param_values) flags.set_value(v);
   read_node_params(flags, c);
 }
 

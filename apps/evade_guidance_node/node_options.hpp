@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "evade/core/param.hpp"
 #include "evade/guidance_lcm/guidance_node.hpp"
 
 namespace evade::node {
@@ -36,8 +37,8 @@ struct NodeOptions {
   std::string auth_commands;      ///< --auth-commands required|off (plan and arm channels)
   std::string auth_sensors;       ///< --auth-sensors required|off (nav, angles, sim clock)
   /// The parameter flags given (--guidance-rate-hz, --stale-limit-s, --max-accel-mps2,
-  /// --status-divider, --queue-capacity), as "key=value" (evade/config/param_flags.hpp).
-  std::vector<std::string> param_overrides;
+  /// --status-divider, --queue-capacity), as typed values (evade/config/param_flags.hpp).
+  std::vector<ParamValue> param_values;
 };
 
 /// Registers the flags on app.

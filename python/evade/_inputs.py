@@ -1,9 +1,12 @@
 """Argument handling shared by the evade calls: scenarios by name or path, --set overrides,
-files given as a path or as their text, parameter keywords as the CLI's key=value flags."""
+files given as a path or as their text, parameter keywords as the CLI's parameter flags."""
 from __future__ import annotations
 
+import numbers
 import os
-from typing import Iterable, List, Mapping, Optional, Sequence, Union
+from typing import Dict, Iterable, List, Mapping, Sequence, Union
+
+from ._evade import InputError
 
 PathOrText = Union[str, "os.PathLike[str]"]
 
@@ -35,9 +38,18 @@ def _value_text(v: object) -> str:
     return str(v)
 
 
-def param_flags(**values: Optional[float]) -> List[str]:
-    """Parameter keywords given (not None) as ``key=value`` overrides, keys as declared in C++."""
-    return [f"{k}={_value_text(v)}" for k, v in values.items() if v is not None]
+def param_values(**values: object) -> Dict[str, float]:
+    """Parameter keywords given (not None), keys as declared in C++, each as the float given:
+    they reach the C++ reader as doubles, as the CLI's parameter flags do (no text on the way).
+    A value that is not a real number is refused naming its key."""
+    out: Dict[str, float] = {}
+    for k, v in values.items():
+        if v is None:
+            continue
+        if isinstance(v, bool) or not isinstance(v, numbers.Real):
+            raise InputError(f"key '{k}' = '{v}' is invalid: expected a number")
+        out[k] = float(v)
+    return out
 
 
 def is_text(value: PathOrText) -> bool:

@@ -16,7 +16,7 @@ from typing import Dict, List, Mapping, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _evade
-from ._inputs import PathOrText, is_text, overrides, param_flags, scenario_path
+from ._inputs import PathOrText, is_text, overrides, param_values, scenario_path
 from ._result import Record
 
 __all__ = ["assess", "AssessResult", "read_cdm", "write_cdm", "Cdm", "CdmObject", "plan_cam",
@@ -283,8 +283,9 @@ def assess(scenario: Optional[str] = None, *, cdm: Union[None, PathOrText, Cdm] 
     plane = _plane_text(encounter_plane, hbr_m)
     hbr = _hbr(hbr_m, cdm) if encounter_plane is None else 0.0
     path, text, name = _cdm_args(cdm)
-    sets = overrides(set) + param_flags(**{"assessment.window_s": window_s})
-    doc, notes = _evade.assess(scenario_path(scenario) if scenario else "", sets, path, text, name,
+    params = param_values(**{"assessment.window_s": window_s})
+    doc, notes = _evade.assess(scenario_path(scenario) if scenario else "", overrides(set), params,
+                               path, text, name,
                                hbr, plane, int(mc), int(seed), int(threads))
     for w in notes:
         warnings.warn(f"evade assess: {w}", RuntimeWarning, stacklevel=2)

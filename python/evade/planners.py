@@ -20,7 +20,7 @@ import os
 from typing import Mapping, Optional, Sequence, Union
 
 from . import _evade
-from ._inputs import overrides, param_flags, scenario_path
+from ._inputs import overrides, param_values, scenario_path
 from .assessment import PlanResult
 
 __all__ = ["plan_threat_area", "plan_formation", "plan_observability"]
@@ -53,10 +53,10 @@ def plan_threat_area(scenario: Scenario, *, set: Sets = None, dv_mps: Optional[f
     V_E = 0."""
     if seed is not None and not 0 <= int(seed) <= 2**32 - 1:
         raise _evade.InputError(f"seed = {seed}: expected an integer in [0, 4294967295]")
-    flags = param_flags(**{"evasion.dv_mps": dv_mps, "transfer.dt_s": dt_transfer_s,
-                           "transfer.impulses": impulses})
+    params = param_values(**{"evasion.dv_mps": dv_mps, "transfer.dt_s": dt_transfer_s,
+                             "transfer.impulses": impulses})
     doc, plan = _evade.plan_threat_area(
-        scenario_path(scenario), overrides(set) + flags, -1 if seed is None else int(seed),
+        scenario_path(scenario), overrides(set), params, -1 if seed is None else int(seed),
         bool(eliminate), [float(v) for v in sweep_dv_mps or []],
         [float(v) for v in sweep_transfer_s or []], _check_plan_id(plan_id))
     return PlanResult(doc, plan)

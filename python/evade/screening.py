@@ -12,7 +12,7 @@ from typing import Dict, Mapping, Optional, Sequence, Union
 import numpy as np
 
 from . import _evade
-from ._inputs import PathOrText, is_text, overrides, param_flags, scenario_path
+from ._inputs import PathOrText, is_text, overrides, param_values, scenario_path
 from ._result import Record, columns
 from .sgp4 import Catalog, read_catalog
 
@@ -60,8 +60,8 @@ def screen(scenario: Optional[str] = None, *, catalog: Union[None, PathOrText, C
     Both: ``span_s`` [s], ``threshold_m`` [m] (robust), ``step_s`` [s] (robust grid step; 0
     automatic), ``threads`` (0: every core). The GIL is released while screening.
     Raises evade.InputError with the CLI's message for an inapplicable or invalid input."""
-    flags = param_flags(**{"span_s": span_s, "robust.threshold_m": threshold_m,
-                           "robust.step_s": step_s})
+    params = param_values(**{"span_s": span_s, "robust.threshold_m": threshold_m,
+                             "robust.step_s": step_s})
     if catalog is not None:
         _refuse("a catalog screen (catalog=)", scenario=scenario, objects_csv=objects_csv,
                 population=population, seed=seed, set=set, trace=trace or None)
@@ -69,7 +69,7 @@ def screen(scenario: Optional[str] = None, *, catalog: Union[None, PathOrText, C
             raise _evade.InputError("method: a catalog screen has only the robust method")
         source = "<catalog>" if isinstance(catalog, Catalog) or is_text(catalog) else os.fspath(catalog)
         doc = _evade.screen_catalog(read_catalog(catalog), source, -1 if primary is None else int(primary),
-                                    flags, start_utc or "", int(threads), bool(prefilter),
+                                    params, start_utc or "", int(threads), bool(prefilter),
                                     bool(path_filter), bool(time_filter))
         return ScreenResult(doc, catalog=True)
     _refuse("a screen of objects (no catalog=)", primary=primary, start_utc=start_utc,
@@ -78,7 +78,7 @@ def screen(scenario: Optional[str] = None, *, catalog: Union[None, PathOrText, C
     if seed is not None and population is None:
         raise _evade.InputError("seed: applies only with population (the seed of the synthetic population)")
     csv = "" if objects_csv is None else os.fspath(objects_csv)
-    doc = _evade.screen_objects(scenario_path(scenario or "seed2"), overrides(set) + flags, method,
+    doc = _evade.screen_objects(scenario_path(scenario or "seed2"), overrides(set), params, method,
                                 int(population or 0), int(seed or 1), csv, bool(trace), int(threads))
     return ScreenResult(doc, catalog=False)
 

@@ -19,6 +19,7 @@
 #include <tuple>
 #include <vector>
 
+#include <nanobind/stl/map.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/tuple.h>
@@ -72,9 +73,10 @@ std::vector<double> number_list(const std::string& text, char sep) {
 }
 
 // The CDM's assessment tables come from an empty scenario with the overrides (the CLI's --cdm).
-config::Scenario cdm_scenario(const std::vector<std::string>& sets) {
+config::Scenario cdm_scenario(const std::vector<std::string>& sets, const ParamMap& params = {}) {
   config::Scenario sc = config::Scenario::empty("--cdm");
   for (const std::string& a : sets) sc.apply_override(a);
+  give_params(params, &sc);
   return sc;
 }
 
@@ -88,24 +90,26 @@ AssessRequest plane_request(const std::string& plane) {
 }
 
 AssessRequest assess_request(const std::string& scenario, const std::vector<std::string>& sets,
-                             const CdmArg& cdm, double hbr_m, const std::string& plane) {
+                             const ParamMap& params, const CdmArg& cdm, double hbr_m,
+                             const std::string& plane) {
   const int sources = !scenario.empty() + cdm.given() + !plane.empty();
   if (sources != 1)
     throw std::invalid_argument("give exactly one of --scenario, --cdm, --encounter-plane");
-  if (!plane.empty() && !sets.empty()) {
+  if (!plane.empty() && (!sets.empty() || !params.empty())) {
     throw std::invalid_argument("--set and --window-s do not apply to --encounter-plane (no "
                                 "states: the 2D Pc only)");
   }
   if (!plane.empty()) return plane_request(plane);
-  if (!scenario.empty()) return read_assess_request(load_scenario(scenario, sets));
-  return read_assess_request_cdm(cdm_scenario(sets), cdm.read(), cdm.source(), hbr_m);
+  if (!scenario.empty()) return read_assess_request(load_scenario(scenario, sets, params));
+  return read_assess_request_cdm(cdm_scenario(sets, params), cdm.read(), cdm.source(), hbr_m);
 }
 
 std::tuple<nb::object, std::vector<std::string>> assess(
-    const std::string& scenario, const std::vector<std::string>& sets, const std::string& cdm_path,
-    const std::string& cdm_text, const std::string& cdm_name, double hbr_m,
-    const std::string& plane, long mc, std::uint64_t seed, int threads) {
-  AssessRequest req = assess_request(scenario, sets, CdmArg{cdm_path, cdm_text, cdm_name}, hbr_m, plane);
+    const std::string& scenario, const std::vector<std::string>& sets, const ParamMap& params,
+    const std::string& cdm_path, const std::string& cdm_text, const std::string& cdm_name,
+    double hbr_m, const std::string& plane, long mc, std::uint64_t seed, int threads) {
+  AssessRequest req =
+      assess_request(scenario, sets, params, CdmArg{cdm_path, cdm_text, cdm_name}, hbr_m, plane);
   req.mc_samples = mc;
   req.mc_seed = seed;
   // As the CLI on one process: threads (0: every core), a wave of that many blocks.
@@ -230,7 +234,8 @@ void bind_assessment(nb::module_& m) {
       .def_rw("pc_max", &CamRequest::pc_max)
       .def_rw("min_miss_m", &CamRequest::min_miss_m)
       .def_rw("along_track_only", &CamRequest::along_track_only);
-  m.def("assess", &assess, nb::arg("scenario"), nb::arg("sets"), nb::arg("cdm_path"),
+  m.def("assess", &assess, nb::arg("scenario"), nb::arg("sets"), nb::arg("params"),
+        nb::arg("cdm_path"),
         nb::arg("cdm_text"), nb::arg("cdm_name"), nb::arg("hbr_m"), nb::arg("encounter_plane"),
         nb::arg("mc"), nb::arg("seed"), nb::arg("threads"),
         "(JSON of `evade assess`, the warnings it prints on stderr)");

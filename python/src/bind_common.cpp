@@ -48,7 +48,12 @@ std::string& package_scenario_dir() {
 
 void set_package_scenario_dir(const std::string& dir) { package_scenario_dir() = dir; }
 
-config::Scenario load_scenario(const std::string& name_or_path, const std::vector<std::string>& sets) {
+void give_params(const ParamMap& params, config::Scenario* sc) {
+  for (const auto& [key, value] : params) sc->set_value(ParamValue{key, value});
+}
+
+config::Scenario load_scenario(const std::string& name_or_path, const std::vector<std::string>& sets,
+                               const ParamMap& params) {
   // A shipped name is read from the installed package first, under its name (the CLI's echo
   // "scenario": "seed2"); anything else is Scenario::load's (paths, $EVADE_SCENARIO_DIR, ...).
   const bool is_name = name_or_path.find('/') == std::string::npos &&
@@ -59,6 +64,7 @@ config::Scenario load_scenario(const std::string& name_or_path, const std::vecto
                            ? config::Scenario::from_yaml_string(read_text_file(shipped, "scenario"), name_or_path)
                            : config::Scenario::load(name_or_path);
   for (const std::string& a : sets) s.apply_override(a);
+  give_params(params, &s);
   return s;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,9 +40,16 @@ nb::object json_to_python(const nlohmann::json& j);
 /// The folder of the scenarios the package ships (names are looked up there first).
 void set_package_scenario_dir(const std::string& dir);
 
-/// The scenario as `--scenario NAME_OR_PATH --set k=v ...` loads it (a shipped name found in
-/// the package's folder first, keeping the name as its source, as the CLI does).
-config::Scenario load_scenario(const std::string& name_or_path, const std::vector<std::string>& sets);
+/// Parameter keywords given (not None), full key -> the double given: they reach the reader
+/// typed (config::Scenario::set_value), as the CLI's parameter flags do.
+using ParamMap = std::map<std::string, double>;
+
+/// The scenario as `--scenario NAME_OR_PATH --set k=v ... --FLAG v ...` loads it (a shipped
+/// name found in the package's folder first, keeping the name as its source, as the CLI does).
+config::Scenario load_scenario(const std::string& name_or_path, const std::vector<std::string>& sets,
+                               const ParamMap& params = {});
+/// Gives each of params to sc typed.
+void give_params(const ParamMap& params, config::Scenario* sc);
 
 /// The whole text of a file; std::invalid_argument "<what>: cannot open '<path>'" (the CLI's
 /// message with the keyword's name for its flag).

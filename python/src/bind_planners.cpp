@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <nanobind/stl/map.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
@@ -70,10 +71,11 @@ nb::tuple result_pair(const nlohmann::json& j, const std::optional<BurnPlan>& pl
   return nb::make_tuple(json_to_python(j), plan ? nb::cast(*plan) : nb::none());
 }
 
-nb::tuple threat_area(const std::string& scenario, const std::vector<std::string>& sets, long seed,
+nb::tuple threat_area(const std::string& scenario, const std::vector<std::string>& sets,
+                      const ParamMap& params, long seed,
                       bool eliminate, const std::vector<double>& sweep_dv_mps,
                       const std::vector<double>& sweep_transfer_s, std::int64_t plan_id) {
-  commands::ThreatAreaRequest req = commands::read_threat_area_request(load_scenario(scenario, sets));
+  commands::ThreatAreaRequest req = commands::read_threat_area_request(load_scenario(scenario, sets, params));
   if (seed >= 0) req.scenario.evasion.seed = static_cast<std::uint64_t>(seed);
   req.study.eliminate = eliminate;
   req.study.sweep_dv_mps = sweep_dv_mps;
@@ -148,7 +150,8 @@ void bind_planners(nb::module_& m) {
                    nb::rv_policy::move, "(N, 3) Δv in ECI (J2000) [m/s], NaN where unknown")
       .def_prop_ro("dv_eci_valid", &burn_eci_valid, nb::rv_policy::move)
       .def_prop_ro("observability", &observability_info, "the observability planner's extras or None");
-  m.def("plan_threat_area", &threat_area, nb::arg("scenario"), nb::arg("sets"), nb::arg("seed"),
+  m.def("plan_threat_area", &threat_area, nb::arg("scenario"), nb::arg("sets"), nb::arg("params"),
+        nb::arg("seed"),
         nb::arg("eliminate"), nb::arg("sweep_dv_mps"), nb::arg("sweep_transfer_s"),
         nb::arg("plan_id"), "(JSON of `evade plan threat-area`, its BurnPlan or None)");
   m.def("plan_formation", &formation_plan, nb::arg("scenario"), nb::arg("sets"),

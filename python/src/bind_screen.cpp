@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <nanobind/stl/map.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
@@ -19,7 +20,7 @@ using namespace evade::conjunction;
 using namespace evade::commands;
 
 nb::object screen_objects(const std::string& scenario, const std::vector<std::string>& sets,
-                          const std::string& method, long population, long seed,
+                          const ParamMap& params, const std::string& method, long population, long seed,
                           const std::string& objects_csv, bool trace, int threads) {
   ScreenObjectsSource src;
   src.method = method;
@@ -29,7 +30,7 @@ nb::object screen_objects(const std::string& scenario, const std::vector<std::st
     src.objects_csv_path = objects_csv;
     src.objects_csv_text = read_text_file(objects_csv, "objects_csv");
   }
-  ScreenObjectsRequest req = read_screen_objects_request(load_scenario(scenario, sets), src);
+  ScreenObjectsRequest req = read_screen_objects_request(load_scenario(scenario, sets, params), src);
   req.trace = trace;
   req.threads = threads;
   req.validate();
@@ -42,12 +43,14 @@ nb::object screen_objects(const std::string& scenario, const std::vector<std::st
 }
 
 nb::object screen_catalog(const sgp4::Catalog& catalog, const std::string& source, long primary,
-                          const std::vector<std::string>& overrides, const std::string& start_utc,
+                          const ParamMap& params, const std::string& start_utc,
                           int threads, bool prefilter, bool path_filter, bool time_filter) {
   ScreenCatalogRequest req;
   req.source = source;
   req.primary_norad = primary;
-  apply_param_overrides(overrides, &req);
+  std::vector<ParamValue> values;
+  for (const auto& [key, value] : params) values.push_back(ParamValue{key, value});
+  apply_param_values(values, &req);
   req.start_utc = start_utc;
   req.threads = threads;
   req.prefilter = prefilter;
@@ -66,11 +69,12 @@ nb::object screen_catalog(const sgp4::Catalog& catalog, const std::string& sourc
 }  // namespace
 
 void bind_screen(nb::module_& m) {
-  m.def("screen_objects", &screen_objects, nb::arg("scenario"), nb::arg("sets"), nb::arg("method"),
+  m.def("screen_objects", &screen_objects, nb::arg("scenario"), nb::arg("sets"), nb::arg("params"),
+        nb::arg("method"),
         nb::arg("population"), nb::arg("seed"), nb::arg("objects_csv"), nb::arg("trace"),
         nb::arg("threads"), "The JSON document of `evade screen` on objects.");
   m.def("screen_catalog", &screen_catalog, nb::arg("catalog"), nb::arg("source"), nb::arg("primary"),
-        nb::arg("overrides"), nb::arg("start_utc"), nb::arg("threads"), nb::arg("prefilter"),
+        nb::arg("params"), nb::arg("start_utc"), nb::arg("threads"), nb::arg("prefilter"),
         nb::arg("path_filter"), nb::arg("time_filter"), "The JSON document of `evade screen --tle/--omm`.");
 }
 

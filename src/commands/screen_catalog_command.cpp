@@ -138,23 +138,24 @@ void ScreenCatalogRequest::validate() const {
   commands::check_screen_cdm_options(cdm, false);  // catalog objects carry no radii
 }
 
-void apply_param_overrides(const std::vector<std::string>& key_values, ScreenCatalogRequest* req) {
-  if (key_values.empty()) return;
-  config::Scenario sc = config::Scenario::empty("command-line flags");
-  for (const std::string& kv : key_values) sc.apply_override(kv);
-  const auto spec = [](const ParamSpec* p, const char* key) -> const ParamSpec& {
-    if (p == nullptr) throw std::logic_error(std::string("no declaration of ") + key);
-    return *p;
-  };
-  req->span_s = sc.get_param(
-      "span_s", spec(config::find_param_spec(screen_scenario_params(), "", "span_s"), "span_s"),
-      req->span_s);
-  for (const auto& [key, field] : {std::pair<const char*, double*>{"robust.threshold_m", &req->threshold_m},
-                                   std::pair<const char*, double*>{"robust.step_s", &req->step_s}}) {
-    *field = sc.get_param(key, spec(config::find_param_spec(conjunction::screen_options_params(), "robust.", key), key),
-                          *field);
+void apply_param_values(const std::vector<ParamValue>& values, ScreenCatalogRequest* req) {
+  const std::pair<const char*, double*> fields[] = {
+      {"span_s", &req->span_s}, {"robust.threshold_m", &req->threshold_m}, {"robust.step_s", &req->step_s}};
+  for (const ParamValue& v : values) {
+    const ParamSpec* spec = v.key == "span_s"
+                                ? config::find_param_spec(screen_scenario_params(), "", v.key)
+                                : config::find_param_spec(conjunction::screen_options_params(), "robust.", v.key);
+    double* field = nullptr;
+    for (const auto& [key, f] : fields) field = v.key == key ? f : field;
+    if (spec == nullptr || field == nullptr) {
+      throw config::ConfigError("command-line flags: unknown key '" + v.key +
+                                "' (allowed span_s, robust.threshold_m, robust.step_s)");
+    }
+    if (!param_value_ok(*spec, v.value)) {
+      throw config::ConfigError("command-line flags: " + param_error(v.key, param_value_text(v.value), *spec));
+    }
+    *field = v.value;
   }
-  sc.check_all_used();
 }
 
 namespace {

@@ -10,8 +10,9 @@ namespace evade::commands {
 namespace {
 
 const Param<ScreenScenario> kScreenScenarioRows[] = {
-    EVADE_PARAM_REAL(ScreenScenario, span_s, "s", 1e-3, 1e8, false,
-                     "screened span from the epoch"),
+    with_flag(EVADE_PARAM_REAL(ScreenScenario, span_s, "s", 1e-3, 1e8, false,
+                               "screened span from the epoch"),
+              "--span-s"),
 };
 
 }  // namespace

@@ -15,11 +15,11 @@ namespace {
 
 SimParametersUsed parameters_used(const sim::SimConfig& cfg, const std::string& scenario) {
   SimParametersUsed p;
-  p.accel_mps2 = cfg.guidance.max_accel_mps2;
+  p.max_accel_mps2 = cfg.guidance.max_accel_mps2;
   p.detect_before_tca_s = cfg.encounter.detect_before_tca_s;
   p.noise_rad = cfg.sensor.noise_rad;
   p.sensor_rate_hz = cfg.sensor.rate_hz;
-  p.sensor_rates = cfg.sensor.has_rates;
+  p.sensor_has_rates = cfg.sensor.has_rates;
   p.rate_noise_radps = cfg.sensor.rate_noise_radps;
   p.guidance_rate_hz = cfg.guidance.rate_hz;
   p.gravity = cfg.gravity;
@@ -66,13 +66,14 @@ sim::MonteCarloCampaign run_campaign(const SimCommandRequest& req) {
 }
 
 nlohmann::json parameters_json(const SimParametersUsed& p) {
-  return {{"accel_mps2", p.accel_mps2},
-          {"detect_before_tca_s", p.detect_before_tca_s},
-          {"noise_rad", p.noise_rad},
-          {"sensor_rate_hz", p.sensor_rate_hz},
-          {"sensor_rates", p.sensor_rates},
-          {"rate_noise_radps", p.rate_noise_radps},
-          {"guidance_rate_hz", p.guidance_rate_hz},
+  // Each parameter under its own key (guidance.max_accel_mps2 is "guidance": {"max_accel_mps2"}).
+  return {{"guidance", {{"max_accel_mps2", p.max_accel_mps2}, {"rate_hz", p.guidance_rate_hz}}},
+          {"encounter", {{"detect_before_tca_s", p.detect_before_tca_s}}},
+          {"sensor",
+           {{"noise_rad", p.noise_rad},
+            {"rate_hz", p.sensor_rate_hz},
+            {"has_rates", p.sensor_has_rates},
+            {"rate_noise_radps", p.rate_noise_radps}}},
           {"gravity", p.gravity == GravityModel::kTwoBody ? "two_body" : "two_body_j2"},
           {"scenario", p.scenario}};
 }

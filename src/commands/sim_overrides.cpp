@@ -9,8 +9,8 @@ namespace evade::commands {
 namespace {
 
 bool given(const SimOverrides& o, const std::string& key) {
-  for (const std::string& kv : o.params) {
-    if (kv.compare(0, key.size() + 1, key + "=") == 0) return true;
+  for (const ParamValue& v : o.params) {
+    if (v.key == key) return true;
   }
   return false;
 }
@@ -18,9 +18,9 @@ bool given(const SimOverrides& o, const std::string& key) {
 }  // namespace
 
 void apply_sim_overrides(const SimOverrides& o, config::Scenario* sc) {
-  for (const std::string& kv : o.params) sc->apply_override(kv);
+  for (const ParamValue& v : o.params) sc->set_value(v);
   if (o.no_rates || (given(o, "sensor.noise_rad") && !given(o, "sensor.rate_noise_radps"))) {
-    sc->apply_override("sensor.has_rates=false");
+    sc->set_value(ParamValue{"sensor.has_rates", 0.0});
   }
 }
 

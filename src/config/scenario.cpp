@@ -13,8 +13,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "scenario_text.hpp"
+
 namespace evade::config {
 namespace {
+
+using detail::join;
 
 using nlohmann::json;
 
@@ -90,11 +94,6 @@ bool file_exists(const std::string& p) {
   return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
-std::string join(const std::vector<std::string>& v, const char* sep) {
-  std::string out;
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? sep : "") + v[i];
-  return out;
-}
 
 void collect_leaves(const json& n, const std::string& prefix, std::vector<std::string>& out) {
   if (n.is_object()) {
@@ -172,15 +171,6 @@ std::string first_bad_byte(const std::string& text) {
 void require_yaml_text(const std::string& text, const std::string& where) {
   const std::string bad = first_bad_byte(text);
   if (!bad.empty()) throw ConfigError(where + ": " + bad);
-}
-
-// Shortest of %.15g / %.17g that reads back as the same double.
-std::string fmt(double v) {
-  char buf[32];
-  // %.17g of any double is at most 24 characters: the count snprintf returns is not needed.
-  (void)std::snprintf(buf, sizeof buf, "%.15g", v);
-  if (std::strtod(buf, nullptr) != v) (void)std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
 }
 
 // The folder of the running executable (/proc/self/exe), "" when it cannot be read.
@@ -335,198 +325,13 @@ void Scenario::mark_used(const std::string& key) const {
     used_keys_.push_back(key);
 }
 
-bool Scenario::has(const std::string& key) const { return find(key) != nullptr; }
+bool Scenario::has(const std::string& key) const { return typed(key) != nullptr || find(key) != nullptr; }
 
 std::size_t Scenario::list_size(const std::string& key) const {
   const json* n = find(key);
   if (!n) return 0;
   if (!n->is_array()) fail(key, n->dump(), "a list");
   return n->size();
-}
-
-namespace {
-bool parse_double_strict(const std::string& s, double& out) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  out = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size();
-}
-}  // namespace
-
-double Scenario::get_double(const std::string& key, double min, double max) const {
-  const json* n = find(key);
-  if (!n) fail(key, "<missing>", "a number in [" + fmt(min) + ", " + fmt(max) + "] (required key)");
-  const std::string text = scalar_text(key, *n);
-  double v = 0.0;
-  if (!parse_double_strict(text, v) || !std::isfinite(v))
-    fail(key, text, "a finite number in [" + fmt(min) + ", " + fmt(max) + "]");
-  if (v < min || v > max) fail(key, text, "a number in [" + fmt(min) + ", " + fmt(max) + "]");
-  record(key, v);
-  return v;
-}
-
-double Scenario::get_double(const std::string& key, double min, double max, double fallback) const {
-  if (!has(key)) {
-    record(key, fallback);
-    return fallback;
-  }
-  return get_double(key, min, max);
-}
-
-long Scenario::get_int(const std::string& key, long min, long max) const {
-  const json* n = find(key);
-  const std::string range = "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
-  if (!n) fail(key, "<missing>", range + " (required key)");
-  const std::string text = scalar_text(key, *n);
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) fail(key, text, range);
-  if (v < min || v > max) fail(key, text, range);
-  record(key, v);
-  return v;
-}
-
-long Scenario::get_int(const std::string& key, long min, long max, long fallback) const {
-  if (!has(key)) {
-    record(key, fallback);
-    return fallback;
-  }
-  return get_int(key, min, max);
-}
-
-bool Scenario::get_bool(const std::string& key) const {
-  const json* n = find(key);
-  if (!n) fail(key, "<missing>", "true or false (required key)");
-  const std::string text = scalar_text(key, *n);
-  if (text != "true" && text != "false") fail(key, text, "true or false");
-  record(key, text == "true");
-  return text == "true";
-}
-
-bool Scenario::get_bool(const std::string& key, bool fallback) const {
-  if (!has(key)) {
-    record(key, fallback);
-    return fallback;
-  }
-  return get_bool(key);
-}
-
-std::string Scenario::get_string(const std::string& key) const {
-  const json* n = find(key);
-  if (!n) fail(key, "<missing>", "a string (required key)");
-  std::string text = scalar_text(key, *n);
-  record(key, text);
-  return text;
-}
-
-std::string Scenario::get_string(const std::string& key, const std::string& fallback) const {
-  if (!has(key)) {
-    record(key, fallback);
-    return fallback;
-  }
-  return get_string(key);
-}
-
-std::string Scenario::get_enum(const std::string& key, const std::vector<std::string>& allowed) const {
-  const json* n = find(key);
-  if (!n) fail(key, "<missing>", "one of {" + join(allowed, ", ") + "} (required key)");
-  std::string text = scalar_text(key, *n);
-  if (std::find(allowed.begin(), allowed.end(), text) == allowed.end())
-    fail(key, text, "one of {" + join(allowed, ", ") + "}");
-  record(key, text);
-  return text;
-}
-
-std::string Scenario::get_enum(const std::string& key, const std::vector<std::string>& allowed,
-                               const std::string& fallback) const {
-  if (!has(key)) {
-    record(key, fallback);
-    return fallback;
-  }
-  return get_enum(key, allowed);
-}
-
-std::vector<double> Scenario::get_double_list(const std::string& key, double min, double max,
-                                              std::size_t min_len) const {
-  const json* n = find(key);
-  const std::string what = "a list of at least " + std::to_string(min_len) +
-                           " finite numbers in [" + fmt(min) + ", " + fmt(max) + "]";
-  if (!n) fail(key, "<missing>", what + " (required key)");
-  if (!n->is_array() || n->size() < min_len) fail(key, n->dump(), what);
-  std::vector<double> out;
-  for (std::size_t i = 0; i < n->size(); ++i) {
-    const json& e = (*n)[i];
-    double v = 0.0;
-    if (!e.is_string() || !parse_double_strict(e.get<std::string>(), v) || !std::isfinite(v) ||
-        v < min || v > max)
-      fail(key + "." + std::to_string(i), e.is_string() ? e.get<std::string>() : e.dump(), what);
-    out.push_back(v);
-  }
-  record(key, out);
-  return out;
-}
-
-Vec3 Scenario::get_vec3(const std::string& key, double min, double max) const {
-  const json* n = find(key);
-  if (n && n->is_array() && n->size() != 3)
-    fail(key, n->dump(), "a list of exactly 3 numbers in [" + fmt(min) + ", " + fmt(max) + "]");
-  const auto v = get_double_list(key, min, max, 3);
-  return Vec3(v[0], v[1], v[2]);
-}
-
-double Scenario::get_param(const std::string& key, const ParamSpec& spec, double fallback) const {
-  const json* n = find(key);
-  if (n == nullptr) {
-    record(key, spec.type == ParamType::kBool ? json(fallback != 0.0) : json(fallback));
-    return fallback;
-  }
-  const std::string text = scalar_text(key, *n);
-  double v = 0.0;
-  bool parsed = false;
-  if (spec.type == ParamType::kBool) {
-    parsed = text == "true" || text == "false";
-    v = text == "true" ? 1.0 : 0.0;
-  } else if (spec.type == ParamType::kReal) {
-    parsed = parse_double_strict(text, v);
-  } else {  // integers: decimal digits only, exact in a double up to 2^53
-    char* end = nullptr;
-    errno = 0;
-    const long long i = std::strtoll(text.c_str(), &end, 10);
-    parsed = !text.empty() && end == text.c_str() + text.size() && errno != ERANGE;
-    v = static_cast<double>(i);
-  }
-  if (!parsed || !param_value_ok(spec, v)) {
-    throw ConfigError(source_ + ": " + param_error(key, text, spec));
-  }
-  if (spec.type == ParamType::kBool) {
-    record(key, v != 0.0);
-  } else if (spec.type == ParamType::kReal) {
-    record(key, v);
-  } else {
-    record(key, static_cast<long long>(v));
-  }
-  return v;
-}
-
-std::uint64_t Scenario::get_seed(const std::string& key, std::uint64_t fallback) const {
-  const json* n = find(key);
-  if (n == nullptr) {
-    record(key, fallback);
-    return fallback;
-  }
-  const std::string text = scalar_text(key, *n);
-  char* end = nullptr;
-  errno = 0;
-  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-  const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
-    return c >= '0' && c <= '9';
-  });
-  if (!digits || end != text.c_str() + text.size() || errno == ERANGE) {
-    fail(key, text, "an unsigned 64-bit integer seed (decimal digits)");
-  }
-  record(key, static_cast<std::uint64_t>(v));
-  return static_cast<std::uint64_t>(v);
 }
 
 namespace {
@@ -557,12 +362,15 @@ std::vector<std::string> used_siblings(const std::vector<std::string>& used,
 void Scenario::check_all_used() const {
   std::vector<std::string> leaves;
   collect_leaves(tree_, "", leaves);
+  for (const ParamValue& t : typed_) leaves.push_back(t.key);  // a typed value nobody read
   std::vector<std::string> unknown;
   for (const auto& leaf : leaves) {
     if (leaf.empty()) continue;
     const bool known = std::any_of(used_keys_.begin(), used_keys_.end(),
                                    [&](const std::string& u) { return covered_by(leaf, u); });
-    if (!known) unknown.push_back(leaf);
+    if (!known && std::find(unknown.begin(), unknown.end(), leaf) == unknown.end()) {
+      unknown.push_back(leaf);
+    }
   }
   if (unknown.empty()) return;
   // For the first unknown key, list the allowed keys beside it (same parent), so the message

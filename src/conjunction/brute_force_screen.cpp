@@ -21,14 +21,6 @@
 #include "evade/dynamics/events.hpp"
 
 namespace evade::conjunction {
-namespace {
-
-double pair_threshold_m(const SpaceObject& a, const SpaceObject& b, const ScreenOptions& opt) {
-  if (!opt.include_warning_radius) return opt.threshold_m;
-  return std::max(opt.threshold_m, warning_radius_m(a, b, opt.warning_multiple));
-}
-
-}  // namespace
 
 ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double span_s,
                                 double sample_step_s, const ScreenOptions& opt) {
@@ -70,7 +62,7 @@ ScreenResult screen_brute_force(const std::vector<SpaceObject>& objects, double 
           const StateEci si = eph.state_near(i, tca, gi, t_prev);
           const StateEci sj = eph.state_near(j, tca, gj, t_prev);
           const double miss = (sj.r_eci_m - si.r_eci_m).norm();
-          const double d_ij = pair_threshold_m(objects[i], objects[j], opt);
+          const double d_ij = pair_threshold_m(opt, collision_radius_m(objects[i], objects[j]));
           if (miss <= d_ij) {
             const double rc = collision_radius_m(objects[i], objects[j]);
             res.events.push_back(Conjunction{i, j, tca, miss, (sj.v_eci_mps - si.v_eci_mps).norm(),

@@ -127,10 +127,6 @@ double relative_speed_bound_mps(const std::vector<SpaceObject>& objects, const S
   return 2.0 * 1.01 * std::sqrt(v2_max);
 }
 
-double pair_distance_limit_m(const SpaceObject& a, const SpaceObject& b, const ScreenOptions& opt) {
-  if (!opt.include_warning_radius) return opt.threshold_m;
-  return std::max(opt.threshold_m, warning_radius_m(a, b, opt.warning_multiple));
-}
 
 double range_rate(const StateEci& a, const StateEci& b) {
   return (b.r_eci_m - a.r_eci_m).dot(b.v_eci_mps - a.v_eci_mps);
@@ -200,7 +196,7 @@ ScreenResult screen_reference(const std::vector<SpaceObject>& objects, double sp
     now.swap(due[static_cast<std::size_t>(k) % kRing]);
     for (const PairIndex& p : now) {
       ++res.stats.pairs_checked;
-      const double d_ij = pair_distance_limit_m(objects[p.i], objects[p.j], opt);
+      const double d_ij = pair_threshold_m(opt, collision_radius_m(objects[p.i], objects[p.j]));
       const StateEci gi = eph.sample(p.i, k - 1, t_prev), gj = eph.sample(p.j, k - 1, t_prev);
       const StateEci& ci = eph.sample(p.i, k, t);
       const StateEci& cj = eph.sample(p.j, k, t);

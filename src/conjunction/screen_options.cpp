@@ -18,10 +18,12 @@ namespace evade::conjunction {
 namespace {
 
 const Param<ScreenOptions> kScreenOptionRows[] = {
-    EVADE_PARAM_REAL(ScreenOptions, threshold_m, "m", 0.0, 1e8, false,
-                     "D: report every closest approach with miss <= max(D, N R_c)"),
-    EVADE_PARAM_REAL(ScreenOptions, step_s, "s", 0.0, 1e5, false,
-                     "grid step h of the broad phase (0: auto_step_s(N, motion))"),
+    with_flag(EVADE_PARAM_REAL(ScreenOptions, threshold_m, "m", 0.0, 1e8, false,
+                               "D: report every closest approach with miss <= max(D, N R_c)"),
+              "--threshold-m"),
+    with_flag(EVADE_PARAM_REAL(ScreenOptions, step_s, "s", 0.0, 1e5, false,
+                               "grid step h of the broad phase (0: auto_step_s(N, motion))"),
+              "--step-s"),
     EVADE_PARAM_REAL(ScreenOptions, leaf_s, "s", 1e-6, 1e5, false,
                      "smallest subdivision of the narrow phase"),
 };

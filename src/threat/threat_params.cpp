@@ -26,9 +26,11 @@ const Param<G> kGeometryRows[] = {
 const Param<T> kOptionRows[] = {
     EVADE_PARAM_REAL(T, chaser.dv_max_mps, "m/s", 1e-6, 1e5, false,
                      "chaser's delta-v capacity DeltaV_max (required)"),
-    EVADE_PARAM_REAL(T, transfer.dt_s, "s", 1e-3, 1e6, false,
-                     "chaser's fixed transfer time DeltaT (required)"),
-    EVADE_PARAM_INT(T, transfer.impulses, "-", 2, 4, "chaser's impulses N (required)"),
+    with_flag(EVADE_PARAM_REAL(T, transfer.dt_s, "s", 1e-3, 1e6, false,
+                               "chaser's fixed transfer time DeltaT (required)"),
+              "--dt-transfer-s", "--dt-transfer"),
+    with_flag(EVADE_PARAM_INT(T, transfer.impulses, "-", 2, 4, "chaser's impulses N (required)"),
+              "--impulses"),
     EVADE_PARAM_REAL(T, sweep.step_s, "s", 1e-3, 1e5, false,
                      "step of the departure-time sweep over one chaser period"),
     EVADE_PARAM_REAL(T, sweep.edge_tol_s, "s", 0.0, 1e4, false,
@@ -37,8 +39,9 @@ const Param<T> kOptionRows[] = {
 };
 
 const Param<E> kEvasionRows[] = {
-    EVADE_PARAM_REAL(E, evasion.dv_mps, "m/s", 0.0, 1e5, false,
-                     "target's evasion burn V_E of the single optimization"),
+    with_flag(EVADE_PARAM_REAL(E, evasion.dv_mps, "m/s", 0.0, 1e5, false,
+                               "target's evasion burn V_E of the single optimization"),
+              "--dv-mps", "--dv"),
     EVADE_PARAM_BOOL(E, evasion.use_isres,
                      "search the direction with ISRES (the paper's GA) instead of the sweep"),
     EVADE_PARAM_INT(E, evasion.population, "-", 2, 100000, "ISRES population"),

@@ -36,7 +36,7 @@ TEST(SimCommand, Seed0MissIsPaper000Table2) {
   EXPECT_FALSE(r.monte_carlo.has_value());
   EXPECT_TRUE(r.reporting);
   EXPECT_TRUE(r.warnings.empty());
-  EXPECT_EQ(r.parameters.accel_mps2, 1.0);
+  EXPECT_EQ(r.parameters.max_accel_mps2, 1.0);
   EXPECT_EQ(r.parameters.scenario, "seed0");
   EXPECT_NE(commands::to_text(r).find("miss 50.00"), std::string::npos);
 }
@@ -52,11 +52,16 @@ TEST(SimCommand, JsonHasTheKeysTheCliPrints) {
         "parameters", "scenario_used"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
-  for (const char* key : {"accel_mps2", "detect_before_tca_s", "noise_rad", "sensor_rate_hz",
-                          "sensor_rates", "rate_noise_radps", "guidance_rate_hz", "gravity",
-                          "scenario"}) {
+  // The echo names each parameter by its own key (guidance.max_accel_mps2 under "guidance").
+  for (const char* key : {"guidance", "encounter", "sensor", "gravity", "scenario"}) {
     EXPECT_TRUE(j["parameters"].contains(key)) << key;
   }
+  EXPECT_EQ(j["parameters"]["guidance"]["max_accel_mps2"], 1.0);
+  EXPECT_EQ(j["parameters"]["encounter"]["detect_before_tca_s"], 10.0);
+  for (const char* key : {"noise_rad", "rate_hz", "has_rates", "rate_noise_radps"}) {
+    EXPECT_TRUE(j["parameters"]["sensor"].contains(key)) << key;
+  }
+  EXPECT_TRUE(j["parameters"]["guidance"].contains("rate_hz"));
   EXPECT_FALSE(j.contains("sensors_signed"));
   EXPECT_FALSE(j.contains("runs"));
   EXPECT_EQ(j["scenario_used"]["guidance"]["max_accel_mps2"], 1.0);

@@ -30,11 +30,11 @@ TEST(SimOverrides, NothingGivenKeepsTheScenario) {
 TEST(SimOverrides, EachValueReplacesItsKeyExactly) {
   config::Scenario sc = config::Scenario::load("seed0");
   commands::SimOverrides o;
-  // Not a short decimal: must survive the text round trip.
-  o.params.push_back(config::param_override_text("guidance.max_accel_mps2", 0.1 + 0.2));
-  o.params.push_back("encounter.detect_before_tca_s=12.5");
-  o.params.push_back("sensor.rate_hz=25");
-  o.params.push_back("guidance.rate_hz=20");
+  // Not a short decimal: the double itself arrives (no text form on the way).
+  o.params.push_back({"guidance.max_accel_mps2", 0.1 + 0.2});
+  o.params.push_back({"encounter.detect_before_tca_s", 12.5});
+  o.params.push_back({"sensor.rate_hz", 25.0});
+  o.params.push_back({"guidance.rate_hz", 20.0});
   commands::apply_sim_overrides(o, &sc);
   const sim::SimConfig c = commands::read_sim_config(sc);
   EXPECT_EQ(c.guidance.max_accel_mps2, 0.1 + 0.2);
@@ -48,7 +48,7 @@ TEST(SimOverrides, EachValueReplacesItsKeyExactly) {
 TEST(SimOverrides, AngleNoiseAloneSelectsTheAnglesOnlySensor) {
   config::Scenario sc = config::Scenario::load("seed0");
   commands::SimOverrides o;
-  o.params.push_back("sensor.noise_rad=5e-05");
+  o.params.push_back({"sensor.noise_rad", 5e-05});
   commands::apply_sim_overrides(o, &sc);
   const sim::SimConfig c = commands::read_sim_config(sc);
   EXPECT_EQ(c.sensor.noise_rad, 50e-6);
@@ -58,8 +58,8 @@ TEST(SimOverrides, AngleNoiseAloneSelectsTheAnglesOnlySensor) {
 TEST(SimOverrides, AngleAndRateNoiseKeepTheMeasuredRates) {
   config::Scenario sc = config::Scenario::load("seed0");
   commands::SimOverrides o;
-  o.params.push_back("sensor.noise_rad=5e-05");
-  o.params.push_back("sensor.rate_noise_radps=1e-06");
+  o.params.push_back({"sensor.noise_rad", 5e-05});
+  o.params.push_back({"sensor.rate_noise_radps", 1e-06});
   commands::apply_sim_overrides(o, &sc);
   const sim::SimConfig c = commands::read_sim_config(sc);
   EXPECT_TRUE(c.sensor.has_rates);
@@ -79,7 +79,7 @@ TEST(SimOverrides, NoRatesSelectsAnglesOnlyWithoutNoise) {
 TEST(SimOverrides, OutOfRangeValueIsNamedByItsKey) {
   config::Scenario sc = config::Scenario::load("seed0");
   commands::SimOverrides o;
-  o.params.push_back("guidance.max_accel_mps2=-1");
+  o.params.push_back({"guidance.max_accel_mps2", -1.0});
   commands::apply_sim_overrides(o, &sc);
   try {
     (void)commands::read_sim_config(sc);

@@ -142,11 +142,11 @@ struct ScreenCatalogRequest {
   void validate() const;
 };
 
-/// Writes the parameter flags' overrides (evade/config/param_flags.hpp: "span_s=...",
-/// "robust.threshold_m=...", "robust.step_s=...") into req, each read through its key's
-/// declaration (screen_scenario_params, screen_options_params); any other key is refused
-/// (config::ConfigError). The catalog's own limits are validate()'s.
-void apply_param_overrides(const std::vector<std::string>& key_values, ScreenCatalogRequest* req);
+/// Sets the parameter flags' values (evade/config/param_flags.hpp: span_s,
+/// robust.threshold_m, robust.step_s) in req, each checked against its key's declaration
+/// (screen_scenario_params, screen_options_params) and stored as the double given; any
+/// other key is refused (config::ConfigError). The catalog's own limits are validate()'s.
+void apply_param_values(const std::vector<ParamValue>& values, ScreenCatalogRequest* req);
 
 struct CatalogEvent {
   long norad_i = 0;

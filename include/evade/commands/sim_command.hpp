@@ -43,13 +43,15 @@ struct SimCommandRequest {
 /// Throws config::ConfigError or std::invalid_argument naming the key.
 SimCommandRequest read_sim_command_request(const config::Scenario& sc);
 
-/// The simulation parameters a run used (echoed as "parameters").
+/// The simulation parameters a run used (echoed as "parameters", each under its own key:
+/// {"guidance": {"max_accel_mps2", "rate_hz"}, "encounter": {"detect_before_tca_s"},
+/// "sensor": {"noise_rad", "rate_hz", "has_rates", "rate_noise_radps"}, "gravity", "scenario"}).
 struct SimParametersUsed {
-  double accel_mps2 = 0.0;           ///< guidance.max_accel_mps2
+  double max_accel_mps2 = 0.0;       ///< guidance.max_accel_mps2
   double detect_before_tca_s = 0.0;  ///< encounter.detect_before_tca_s
   double noise_rad = 0.0;            ///< sensor angle noise 1-sigma
   double sensor_rate_hz = 0.0;
-  bool sensor_rates = true;          ///< the sensor measures the LOS rates
+  bool sensor_has_rates = true;      ///< the sensor measures the LOS rates
   double rate_noise_radps = 0.0;     ///< sensor angle-rate noise 1-sigma
   double guidance_rate_hz = 0.0;
   GravityModel gravity = GravityModel::kTwoBodyJ2;

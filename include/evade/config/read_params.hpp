@@ -71,7 +71,7 @@ std::string params_markdown(const std::string& prefix, const ParamTable<Cfg>& ta
     md.append("| `").append(prefix).append(p.spec.key).append("` | ").append(p.spec.unit);
     md.append(" | ").append(def).append(" | ").append(param_allowed_text(p.spec));
     md.append(" | ").append(p.spec.meaning).append(" | ");
-    md.append(param_flag_markdown(prefix + p.spec.key)).append(" |\n");
+    md.append(param_flag_markdown(p.spec)).append(" |\n");
   }
   return md;
 }

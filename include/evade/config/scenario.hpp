@@ -47,6 +47,12 @@ class Scenario {
 
   /// Applies "key.path=value".
   void apply_override(const std::string& assignment);
+  /// A value given typed (a parameter flag, a Python keyword: evade/core/param.hpp
+  /// ParamValue): get_param and get_double at v.key return this double, checked against the
+  /// reader's range but never turned into text; it wins over the document and over any
+  /// apply_override of the key (a later set_value of the key replaces it). Unread, it is
+  /// reported by check_all_used() like an unknown key.
+  void set_value(const ParamValue& v);
 
   bool has(const std::string& key) const;
   /// Number of elements of the list at key (0 when absent).
@@ -88,15 +94,18 @@ class Scenario {
  private:
   Scenario(nlohmann::json tree, std::string source);
   const nlohmann::json* find(const std::string& key) const;
+  const double* typed(const std::string& key) const;  // set_value's value at key, or nullptr
   [[noreturn]] void fail(const std::string& key, const std::string& value,
                          const std::string& allowed) const;
   std::string scalar_text(const std::string& key, const nlohmann::json& node) const;
   void record(const std::string& key, const nlohmann::json& value) const;
+  void record_param(const std::string& key, const ParamSpec& spec, double v) const;
 
   nlohmann::json tree_;  // YAML converted to JSON; every scalar kept as its text
   std::string source_;
   mutable nlohmann::json used_ = nlohmann::json::object();
   mutable std::vector<std::string> used_keys_;
+  std::vector<ParamValue> typed_;  // set_value's, one per key
 };
 
 }  // namespace evade::config

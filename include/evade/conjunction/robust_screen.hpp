@@ -38,6 +38,7 @@
 // sorted. Results do not depend on the split.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -77,6 +78,14 @@ struct ScreenOptions {
   /// rows as "robust.<key>", the Earth model with the Earth table).
   void validate() const;
 };
+
+/// D_ij, the distance within which a pair is reported: the threshold D, or with
+/// include_warning_radius max(D, N R_c(i, j)), R_c the pair's collision radius (eq. 1:
+/// collision_radius_m of types.hpp) [m]. The one definition every screener uses.
+inline double pair_threshold_m(const ScreenOptions& opt, double collision_radius_m) noexcept {
+  if (!opt.include_warning_radius) return opt.threshold_m;
+  return std::max(opt.threshold_m, opt.warning_multiple * collision_radius_m);
+}
 
 /// The scenario's `robust.*` rows of ScreenOptions: threshold_m, step_s, leaf_s (the other
 /// fields come from the command line, paper_step.n_warning and the Earth model).

@@ -32,6 +32,18 @@ struct ParamSpec {
   double hi;            ///< upper limit, inclusive (ignored for kBool)
   bool lo_open;         ///< true: (lo, hi]; false: [lo, hi]
   const char* meaning;  ///< one line
+  /// The command-line flag that sets it ("--max-accel-mps2": the key's leaf with its unit
+  /// suffix, evade/config/param_flags.hpp), or nullptr when no flag does; declared with the
+  /// row (with_flag), so the flag, its help and its range cannot drift apart.
+  const char* flag;
+  const char* aliases;  ///< older spellings of the flag, comma-separated ("--accel"), or ""
+};
+
+/// A parameter's value as a flag or a keyword gives it: the full key and the double, carried
+/// typed to the reader (config::Scenario::set_value), never through text.
+struct ParamValue {
+  std::string key;  ///< full key, "guidance.max_accel_mps2"
+  double value = 0.0;
 };
 
 /// True when v is finite, inside the range, and whole for kInt (kBool: 0 or 1).
@@ -85,6 +97,15 @@ struct ParamTable {
   std::size_t size() const noexcept { return count; }
 };
 
+/// Row p with the flag that sets it (and older spellings, comma-separated): the one place a
+/// flag is declared; every executable that offers the parameter registers it from here.
+template <class Cfg>
+constexpr Param<Cfg> with_flag(Param<Cfg> p, const char* flag, const char* aliases = "") noexcept {
+  p.spec.flag = flag;
+  p.spec.aliases = aliases;
+  return p;
+}
+
 template <class Cfg, std::size_t N>
 constexpr ParamTable<Cfg> make_param_table(const Param<Cfg> (&rows)[N]) noexcept {
   return ParamTable<Cfg>{rows, N};
@@ -108,27 +129,30 @@ std::string validate_params(const ParamTable<Cfg>& table, const Cfg& c, const st
 // Row declarations. `path` is the field path inside Cfg, and becomes the key. It is a member
 // path (`filter.gate_chi2_2dof`), which cannot be parenthesized in `&c.path`: hence the
 // NOLINT(bugprone-macro-parentheses) on those lines.
-#define EVADE_PARAM_REAL(Cfg, path, unit, lo, hi, lo_open, meaning)                        \
-  ::evade::Param<Cfg> {                                                                    \
-    {#path, unit, ::evade::ParamType::kReal, lo, hi, lo_open, meaning},                   \
-        [](Cfg& c) -> double* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */  \
-        nullptr, nullptr, nullptr                                                          \
+#define EVADE_PARAM_REAL(Cfg, path, unit, lo, hi, lo_open, meaning)                          \
+  ::evade::Param<Cfg> {                                                                      \
+    {#path, unit, ::evade::ParamType::kReal, lo, hi, lo_open, meaning, nullptr, nullptr},     \
+        [](Cfg& c) -> double* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */    \
+        nullptr, nullptr, nullptr                                                            \
   }
-#define EVADE_PARAM_INT(Cfg, path, unit, lo, hi, meaning)                                  \
-  ::evade::Param<Cfg> {                                                                    \
-    {#path, unit, ::evade::ParamType::kInt, lo, hi, false, meaning}, nullptr,             \
-        [](Cfg& c) -> int* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */     \
-        nullptr, nullptr                                                                   \
+#define EVADE_PARAM_INT(Cfg, path, unit, lo, hi, meaning)                                    \
+  ::evade::Param<Cfg> {                                                                      \
+    {#path, unit, ::evade::ParamType::kInt, lo, hi, false, meaning, nullptr, nullptr},        \
+        nullptr,                                                                             \
+        [](Cfg& c) -> int* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */       \
+        nullptr, nullptr                                                                     \
   }
-#define EVADE_PARAM_BOOL(Cfg, path, meaning)                                               \
-  ::evade::Param<Cfg> {                                                                    \
-    {#path, "-", ::evade::ParamType::kBool, 0.0, 1.0, false, meaning}, nullptr, nullptr, \
-        [](Cfg& c) -> bool* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */    \
-        nullptr                                                                            \
+#define EVADE_PARAM_BOOL(Cfg, path, meaning)                                                 \
+  ::evade::Param<Cfg> {                                                                      \
+    {#path, "-", ::evade::ParamType::kBool, 0.0, 1.0, false, meaning, nullptr, nullptr},      \
+        nullptr, nullptr,                                                                    \
+        [](Cfg& c) -> bool* { return &c.path; }, /* NOLINT(bugprone-macro-parentheses) */      \
+        nullptr                                                                              \
   }
-#define EVADE_PARAM_SEED(Cfg, path, meaning)                                               \
-  ::evade::Param<Cfg> {                                                                    \
-    {#path, "-", ::evade::ParamType::kSeed, 0.0, 18446744073709551615.0, false, meaning}, \
-        nullptr, nullptr, nullptr,                                                         \
-        [](Cfg& c) -> std::uint64_t* { return &c.path; } /* NOLINT(bugprone-macro-parentheses) */     \
+#define EVADE_PARAM_SEED(Cfg, path, meaning)                                                 \
+  ::evade::Param<Cfg> {                                                                      \
+    {#path, "-", ::evade::ParamType::kSeed, 0.0, 18446744073709551615.0, false, meaning,      \
+     nullptr, nullptr},                                                                      \
+        nullptr, nullptr, nullptr,                                                           \
+        [](Cfg& c) -> std::uint64_t* { return &c.path; } /* NOLINT(bugprone-macro-parentheses) */ \
   }

@@ -54,10 +54,9 @@ struct Worker {
   // the grid states are exact, else Ephemeris::exact_state, once per object and step.
   const StateEci& exact(std::size_t i, int end, const StateEci* grid_states, double t_s);
 
-  // D_ij = max(D, N R_c(i, j)) (warning_radius_m of types.hpp, from the per-object sums).
+  // D_ij (pair_threshold_m of robust_screen.hpp), R_c from the per-object sums.
   double pair_threshold(std::size_t i, std::size_t j) const {
-    if (!opt->include_warning_radius) return opt->threshold_m;
-    return std::max(opt->threshold_m, opt->warning_multiple * (size_m[i] + size_m[j]));
+    return pair_threshold_m(*opt, size_m[i] + size_m[j]);
   }
 
   // Arc bounds of every object on [t_a, t_a + dt] (J2: arc lemma; two-body: the conic).
