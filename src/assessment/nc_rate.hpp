@@ -1,5 +1,5 @@
-// The 3D-Nc collision rate dNc/dt at one time (private to pc_3d_nc.cpp; the method and the
-// equations are in pc_3d_nc.cpp's header).
+// The 3D-Nc collision rate dNc/dt at one time (private to pc_3d_nc.cpp and its time integral,
+// nc_time_integral.hpp; the method and the equations are in pc_3d_nc.cpp's header).
 #pragma once
 
 #include "evade/core/state.hpp"

@@ -51,12 +51,13 @@
 
 #include "evade/assessment/equinoctial.hpp"
 #include "evade/core/elements.hpp"
-#include "evade/core/erfc_inverse.hpp"
-#include "evade/core/gauss_kronrod.hpp"
-#include "nc_rate.hpp"
+#include "nc_time_integral.hpp"
 
 namespace evade::assessment {
 namespace {
+
+using nc::NcPanel;
+using nc::TimeIntegral;
 
 constexpr double kRateCut = 2.5e-6;  // rate / peak below which a window end is negligible
 // Accepted non-positive-definiteness: the smallest eigenvalue of the correlation matrix may be
@@ -166,151 +167,6 @@ bool element_pdf(const StateEci& s, const Mat6& c, double mu, nc::ElementPdf* p)
   p->q = 0.5 * (q + q.transpose());
   return p->q.allFinite();
 }
-
-}  // namespace
-
-EncounterWindow coppola_window(const StateEci& obj1, const Mat6& cov1_eci,
-                               const StateEci& obj2, const Mat6& cov2_eci, double hbr_m,
-                               double gamma) {
-  const Vec3 r = obj2.r_eci_m - obj1.r_eci_m;
-  const Vec3 v = obj2.v_eci_mps - obj1.v_eci_mps;
-  const double v0 = v.norm();
-  EncounterWindow w;
-  if (!(v0 >= 100.0 * std::numeric_limits<double>::epsilon())) {
-    w.tau0_s = -std::numeric_limits<double>::infinity();
-    w.tau1_s = std::numeric_limits<double>::infinity();
-    return w;
-  }
-  // Encounter frame: x along the relative velocity, y towards the miss (AAS 12-248 eqs. 4-6).
-  const Vec3 xh = v / v0;
-  Vec3 yh = r - xh * xh.dot(r);
-  if (!(yh.norm() > 0.0)) yh = xh.unitOrthogonal();
-  yh.normalize();
-  Mat3 rot;
-  rot.row(0) = xh;
-  rot.row(1) = yh;
-  rot.row(2) = xh.cross(yh);
-  const Mat3 a = rot * (cov1_eci + cov2_eci).block<3, 3>(0, 0) * rot.transpose();
-  const Vec3 re = rot * r;
-  const Eigen::Matrix2d pc = a.block<2, 2>(1, 1);
-  const Eigen::Vector2d wv = a.block<2, 1>(1, 0);
-  const Eigen::Vector2d b = pc.completeOrthogonalDecomposition().solve(wv);
-  const double sv2 = std::sqrt(std::max(0.0, 2.0 * (a(0, 0) - b.dot(wv))));
-  const double q0 = b.dot(re.tail<2>());
-  const double dmin = -hbr_m * b.norm();
-  const double dmax = hbr_m * std::sqrt(1.0 + b.squaredNorm());
-  const double t = erfc_inverse(gamma) * sv2;  // AAS 12-248 eqs. 12-16
-  w.tau0_s = (-t + q0 - dmax) / v0;
-  w.tau1_s = (t + q0 - dmin) / v0;
-  return w;
-}
-
-namespace {
-
-struct NcPanel {
-  double a = 0.0, b = 0.0;
-  double nc = 0.0;        // Kronrod estimate of the integral of the rate
-  double nc_small = 0.0;  // same for the small-HBR rate
-  double err = 0.0;       // QUADPACK error estimate
-};
-
-// The rate's time integral over panels, refined where the error is largest.
-class TimeIntegral {
- public:
-  TimeIntegral(const nc::ElementPdf& p1, const nc::ElementPdf& p2, const nc::RateSettings& rs,
-               const Nc3dOptions& opt)
-      : p1_(p1), p2_(p2), rs_(rs), opt_(opt) {}
-
-  double rate_at(double t_s, double* small_per_s);
-  void add_panels(double a, double b, int count);
-  void refine();
-  double total(double NcPanel::*field) const;
-  bool budget_left() const { return evaluations_ < opt_.max_rate_evaluations; }
-
-  int evaluations_ = 0;
-  double peak_ = 0.0, t_peak_ = 0.0;
-  double worst_pop_failure_ = 0.0;     // largest rate at a time whose POP did not converge
-  double worst_sphere_error_ = 0.0;    // largest error estimate of an unconverged sphere integral
-  std::vector<NcPanel> panels_;
-
- private:
-  NcPanel evaluate(double a, double b);
-
-  const nc::ElementPdf& p1_;
-  const nc::ElementPdf& p2_;
-  nc::RateSettings rs_;
-  Nc3dOptions opt_;
-};
-
-double TimeIntegral::rate_at(double t_s, double* small_per_s) {
-  const nc::Rate r = nc::collision_rate(p1_, p2_, t_s, rs_, 1e-2 * opt_.rel_tol * peak_);
-  ++evaluations_;
-  if (r.rate_per_s > peak_) {
-    peak_ = r.rate_per_s;
-    t_peak_ = t_s;
-  }
-  if (!r.pop_converged) worst_pop_failure_ = std::max(worst_pop_failure_, r.rate_per_s);
-  if (!r.sphere_converged) worst_sphere_error_ = std::max(worst_sphere_error_, r.sphere_error_per_s);
-  if (small_per_s != nullptr) *small_per_s = r.rate_small_per_s;
-  return r.rate_per_s;
-}
-
-NcPanel TimeIntegral::evaluate(double a, double b) {
-  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  double f[15], fs[15];
-  for (int k = 0; k < 7; ++k) {
-    f[k] = rate_at(c - h * kGk15Nodes[k], &fs[k]);
-    f[14 - k] = rate_at(c + h * kGk15Nodes[k], &fs[14 - k]);
-  }
-  f[7] = rate_at(c, &fs[7]);
-  NcPanel p{a, b, 0.0, 0.0, 0.0};
-  double gauss = kG7Weights[3] * f[7];
-  for (int k = 0; k < 8; ++k) {
-    const double sym = k < 7 ? f[k] + f[14 - k] : f[7];
-    p.nc += kGk15Weights[k] * sym;
-    p.nc_small += kGk15Weights[k] * (k < 7 ? fs[k] + fs[14 - k] : fs[7]);
-    if (k % 2 == 1 && k < 7) gauss += kG7Weights[k / 2] * sym;
-  }
-  const double mean = 0.5 * p.nc;
-  double resasc = 0.0;
-  for (int k = 0; k < 15; ++k) resasc += kGk15Weights[k < 8 ? k : 14 - k] * std::abs(f[k] - mean);
-  p.nc *= h;
-  p.nc_small *= h;
-  resasc *= h;
-  p.err = std::abs(p.nc - gauss * h);
-  if (resasc > 0.0 && p.err > 0.0) p.err = resasc * std::min(1.0, std::pow(200.0 * p.err / resasc, 1.5));
-  return p;
-}
-
-void TimeIntegral::add_panels(double a, double b, int count) {
-  const double w = (b - a) / count;
-  for (int i = 0; i < count && budget_left(); ++i) {
-    panels_.push_back(evaluate(a + i * w, i + 1 == count ? b : a + (i + 1) * w));
-  }
-}
-
-double TimeIntegral::total(double NcPanel::*field) const {
-  double s = 0.0;
-  for (const NcPanel& p : panels_) s += p.*field;
-  return s;
-}
-
-void TimeIntegral::refine() {
-  while (budget_left()) {
-    const double nc = total(&NcPanel::nc);
-    if (total(&NcPanel::err) <= opt_.rel_tol * std::abs(nc) + 1e-300) return;
-    const auto worst = std::max_element(panels_.begin(), panels_.end(),
-        [](const NcPanel& x, const NcPanel& y) { return x.err < y.err; });
-    const double a = worst->a, b = worst->b, m = 0.5 * (a + b);
-    panels_.erase(worst);
-    panels_.push_back(evaluate(a, m));
-    panels_.push_back(evaluate(m, b));
-  }
-}
-
-}  // namespace
-
-namespace {
 
 // The span holding all but kSpanTail of Nc on each side: the cumulative Nc over the panels
 // in time order, linear inside a panel (CARA's TaConj, TbConj, comparable to Coppola's
