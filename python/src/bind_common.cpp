@@ -68,6 +68,18 @@ config::Scenario load_scenario(const std::string& name_or_path, const std::vecto
   return s;
 }
 
+// The scenario `--scenario NAME` loads, read from `path` (the package's copy of a shipped
+// scenario) but named as the CLI names it, so that the JSON's "scenario" echoes the same text.
+config::Scenario load_named_scenario(const std::string& name, const std::string& path,
+                                     const std::vector<std::string>& sets) {
+  config::Scenario sc = (path.empty() || path == name)
+                            ? config::Scenario::load(name)
+                            : config::Scenario::from_yaml_string(read_text_file(path, "scenario"),
+                                                                 name);
+  for (const std::string& kv : sets) sc.apply_override(kv);
+  return sc;
+}
+
 std::string read_text_file(const std::string& path, const std::string& what) {
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(what + ": cannot open '" + path + "'");

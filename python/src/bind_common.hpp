@@ -55,10 +55,18 @@ void give_params(const ParamMap& params, config::Scenario* sc);
 /// message with the keyword's name for its flag).
 std::string read_text_file(const std::string& path, const std::string& what);
 
+/// The scenario `--scenario NAME` loads, read from `path` (the package's copy of a shipped
+/// scenario) but named as the CLI names it, with the key=value overrides `sets` applied.
+config::Scenario load_named_scenario(const std::string& name, const std::string& path,
+                                     const std::vector<std::string>& sets);
+
 void bind_sgp4(nb::module_& m);
 void bind_screen(nb::module_& m);
 void bind_assessment(nb::module_& m);
 void bind_planners(nb::module_& m);
 void bind_sim(nb::module_& m);
+/// ThrustCommand and _GuidanceLaw (bind_guidance_law.cpp; registered by bind_sim).
+void bind_thrust_command(nb::module_& m);
+void bind_guidance_law(nb::module_& m);
 
 }  // namespace evade::python
