@@ -3,7 +3,7 @@
 // two-body motion (both use the analytic Kepler propagation), and to the integration error
 // for two-body + J2 (the screener reached the TCA through its grid arcs, event_states
 // integrates from t = 0 straight to it, both with DOP853 at rel_tol 1e-13, abs_tol 1e-9,
-// whose measured global error is ~1e-4 m over a day in LEO: dop853.hpp). The bound used,
+// whose measured global error is ~1e-4 m over a day in LEO: adaptive_options.hpp). The bound used,
 // 1 mm on the distance and 1e-6 m/s on the speed, is that error with a margin of 10.
 #include <gtest/gtest.h>
 

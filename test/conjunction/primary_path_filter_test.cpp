@@ -8,7 +8,7 @@
 //    s_c -+ asin(eps).
 // Checked at every 30 s of 2-hour pieces spread over 7 days for every near-Earth element set
 // of synthetic-1200.tle. The end-to-end check (no piece cleared where SGP4 comes within D) is
-// in sgp4_stress_validation_test.cpp, beside the stressed catalogs.
+// in sgp4_stress_validation_test.cpp, on the stress catalogs (sgp4_stress_catalog.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>

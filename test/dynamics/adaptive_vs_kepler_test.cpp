@@ -24,7 +24,7 @@ double one_day_position_error_m(const AdaptiveOptions& opt, IntegrationStats* st
   return (x1.head<3>() - truth.r_eci_m).norm();
 }
 
-// Requirement of the default preset (dop853.hpp): < 1 m after one day, e = 0.1 LEO.
+// Requirement of the default preset (adaptive_options.hpp): < 1 m after one day, e = 0.1 LEO.
 TEST(AdaptiveVsKepler, DefaultToleranceKeepsOneDayPositionErrorBelowOneMetre) {
   IntegrationStats stats;
   const double err_m = one_day_position_error_m(AdaptiveOptions{}, &stats);
