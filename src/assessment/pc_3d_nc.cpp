@@ -36,6 +36,7 @@
 //      2.5e-6 of the peak (CARA's refinement cut, gamma = 1e-6). For one isolated conjunction
 //      Nc is the Pc (H21); pc is clipped to 1 as CARA does for quadrature error.
 // Not implemented: CARA's covariance cross-correlation correction (H21 eq. 57, DCP inputs).
+// Step 5's time integral is nc_time_integral.cpp, Coppola's window coppola_window.cpp.
 #include "evade/assessment/pc_3d_nc.hpp"
 
 #include <algorithm>

@@ -3,6 +3,9 @@
 // differences: e.g. Atkinson, An Introduction to Numerical Analysis, 2nd ed., sec. 5.7.
 // The perturbation envelope and what it assumes: docs/VALIDATION.md, "Robust mode with SGP4
 // motion".
+// This file: the motion's states, lane groups and accelerations. The envelopes are
+// sgp4_motion_envelope.cpp, the option checks sgp4_motion_options.cpp, the catalog's motion is
+// built by sgp4_catalog_builder.cpp.
 #include "evade/conjunction/sgp4_motion.hpp"
 
 #include <algorithm>
