@@ -8,9 +8,10 @@ sight (LOS) to the threat turns, estimated from filtered elevation/azimuth measu
 """
 from __future__ import annotations
 
+import numbers
 import os
 import warnings
-from typing import Any, Dict, Mapping, Optional, Sequence, Union
+from typing import Any, Dict, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -109,9 +110,14 @@ def monte_carlo_seeds(seed: int, run: int) -> Dict[str, int]:
     return {"sensor.seed": sensor, "actuator.seed": actuator}
 
 
-def _config_overrides(config: Mapping[str, object]) -> list:
+def _config_overrides(config: Mapping[str, object]) -> Tuple[list, Dict[str, float]]:
+    """The config dict as (``--set`` texts, typed values): a real number (not a bool) reaches
+    the C++ reader as the double given, as a CLI parameter flag does; anything else as text,
+    refused there with the key's message when it is not what the key takes."""
     keys = {k if str(k).startswith("guidance.") else f"guidance.{k}": v for k, v in config.items()}
-    return overrides(keys)
+    typed = {k: float(v) for k, v in keys.items()
+             if isinstance(v, numbers.Real) and not isinstance(v, bool)}
+    return overrides({k: v for k, v in keys.items() if k not in typed}), typed
 
 
 class GuidanceLaw(_evade._GuidanceLaw):
@@ -129,11 +135,11 @@ class GuidanceLaw(_evade._GuidanceLaw):
         if config is None or isinstance(config, Mapping):
             if set is not None:
                 raise _evade.InputError("set: applies only to a scenario (config='seed0', ...)")
-            sets = _config_overrides(config or {})
-            super().__init__("", "", sets, "GuidanceLaw config")
+            sets, params = _config_overrides(config or {})
+            super().__init__("", "", sets, params, "GuidanceLaw config")
         else:
             name = os.fspath(config)
-            super().__init__(name, scenario_path(name), overrides(set), "")
+            super().__init__(name, scenario_path(name), overrides(set), {}, "")
 
     # step() and reset() are the extension's methods themselves (no Python layer in the
     # cycle): help(GuidanceLaw.step).

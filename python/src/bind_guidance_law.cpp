@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include <nanobind/stl/map.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
@@ -47,12 +48,15 @@ GuidanceConfig read_guidance_config(const config::Scenario& sc, bool strict) {
 }
 
 // A scenario's guidance keys (name/path given) or the defaults with key=value overrides.
+// params: the config dict's numbers, given typed (bind_common.hpp ParamMap).
 void init_law(BoundLaw* self, const std::string& scenario, const std::string& path,
-              const std::vector<std::string>& sets, const std::string& source) {
+              const std::vector<std::string>& sets, const ParamMap& params,
+              const std::string& source) {
   const bool from_scenario = !scenario.empty();
   config::Scenario sc = from_scenario ? load_named_scenario(scenario, path, {})
                                       : config::Scenario::empty(source);
   for (const std::string& kv : sets) sc.apply_override(kv);
+  give_params(params, &sc);
   new (self) BoundLaw(read_guidance_config(sc, !from_scenario));
 }
 
@@ -278,7 +282,7 @@ void bind_thrust_command(nb::module_& m) {
 void bind_guidance_law(nb::module_& m) {
   nb::class_<BoundLaw>(m, "_GuidanceLaw", "The paper-000 guidance law (use evade.GuidanceLaw).")
       .def("__init__", &init_law, nb::arg("scenario"), nb::arg("path"), nb::arg("sets"),
-           nb::arg("source"))
+           nb::arg("params"), nb::arg("source"))
       .def("step", &step, nb::arg("t_s"), nb::arg("r_eci_m"), nb::arg("v_eci_mps"),
            nb::arg("has_measurement") = false, nb::arg("elevation_rad") = 0.0,
            nb::arg("azimuth_rad") = 0.0, nb::arg("sigma_angle_rad") = 0.0,

@@ -56,7 +56,7 @@ def test_series_closest_approach_agrees_with_miss_and_tca():
     s = r.series
     t, rel = s["t_s"], np.stack([s["rel_x_m"], s["rel_y_m"], s["rel_z_m"]], axis=1)
     assert t[0] == pytest.approx(r.start_s, abs=1e-6)
-    assert t[-1] <= r.tca_s < t[-1] + 1.0 / r.parameters.guidance_rate_hz
+    assert t[-1] <= r.tca_s < t[-1] + 1.0 / r.parameters.guidance.rate_hz
     assert np.all(np.diff(s["range_m"]) < 0.0)  # closing up to the last sample before TCA
     # Straight-line closest approach from the last two samples (1 m/s^2 bends the path by
     # 0.2 mm over a 20 ms cycle).
@@ -232,6 +232,17 @@ def test_law_bad_step_arguments():
         law.step(0.0, R_SAT, ("a", 0.0, 0.0))
     with pytest.raises(evade.InputError, match="t_s = nan"):
         law.step(math.nan, R_SAT, V_SAT)
+
+
+def test_guidance_law_config_keyword_is_the_double_given():
+    # docs/ARCHITECTURE.md "A parameter's way": 0.1 + 0.2 has no short decimal form; the
+    # keyword's value reaches the law's config as that double (typed, no text on the way).
+    v = 0.1 + 0.2
+    assert evade.GuidanceLaw({"max_accel_mps2": v}).config["max_accel_mps2"] == v
+    assert evade.GuidanceLaw({"guidance.max_accel_mps2": v}).config["max_accel_mps2"] == v
+    assert evade.GuidanceLaw("seed0", set={"guidance.max_accel_mps2": v}).config["max_accel_mps2"] == v
+    with pytest.raises(evade.InputError, match=r"key 'guidance.max_accel_mps2' = 'true' is invalid"):
+        evade.GuidanceLaw({"max_accel_mps2": True})  # a bool is not a number
 
 
 def test_law_config_matches_a_simulated_scenario(cli_json):
