@@ -55,7 +55,7 @@ conjunction::Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
   if (filter) {
     counts->emplace();
     kept = conjunction::prefilter_primary(req.catalog.objects, req.primary_norad, mo.start_j2000_s,
-                             req.span_s, req.threshold_m, &**counts, mo.threads, req.path_filter);
+                             req.span_s, req.robust.threshold_m, &**counts, mo.threads, req.path_filter);
   }
   conjunction::Sgp4Screening s = conjunction::sgp4_screening(filter ? kept : req.catalog.objects, mo);
   if (req.diagnostic)
@@ -68,12 +68,7 @@ conjunction::Sgp4Screening catalog_motion(const ScreenCatalogRequest& req,
 
 // The screen's options but for the motion and the primary (catalog_options adds them).
 conjunction::ScreenOptions base_options(const ScreenCatalogRequest& req) {
-  conjunction::ScreenOptions so;
-  so.gravity = GravityModel::kTwoBodyJ2;
-  so.earth = conjunction::wgs72_earth();
-  so.threshold_m = req.threshold_m;
-  so.include_warning_radius = false;  // catalogs carry no sizes: the threshold alone
-  so.step_s = req.step_s;
+  conjunction::ScreenOptions so = req.robust;
   so.threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (req.progress) {
     so.progress = [&req](double f) {
@@ -111,7 +106,7 @@ ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const conjun
   res.start_j2000_s = s.start_j2000_s;
   res.start_utc = utc(s.start_j2000_s);
   res.span_s = req.span_s;
-  res.threshold_m = req.threshold_m;
+  res.threshold_m = req.robust.threshold_m;
   res.objects = static_cast<long>(s.objects.size());
   res.bad_entries = req.catalog.bad_entries;
   for (const auto& rj : s.rejected) res.rejections.push_back(rj.message());
@@ -125,22 +120,32 @@ ScreenCatalogResult catalog_header(const ScreenCatalogRequest& req, const conjun
 
 }  // namespace
 
+conjunction::ScreenOptions catalog_screen_options() {
+  conjunction::ScreenOptions so;
+  so.gravity = GravityModel::kTwoBodyJ2;
+  so.earth = conjunction::wgs72_earth();
+  so.threshold_m = 5000.0;
+  so.include_warning_radius = false;  // catalogs carry no sizes: the threshold alone
+  so.step_s = 0.0;                    // auto_step_s(N)
+  return so;
+}
+
 void ScreenCatalogRequest::validate() const {
   if (!(span_s > 0.0 && span_s <= kMaxScreenSpanS))
     throw std::invalid_argument("--span-s = " + std::to_string(span_s) +
                                 " is invalid: expected a number in (0, 2678400] s");
-  if (!(threshold_m > 0.0 && threshold_m <= 1e8))
-    throw std::invalid_argument("--threshold-m = " + std::to_string(threshold_m) +
+  if (!(robust.threshold_m > 0.0 && robust.threshold_m <= 1e8))
+    throw std::invalid_argument("--threshold-m = " + std::to_string(robust.threshold_m) +
                                 " is invalid: expected a number in (0, 1e8] m");
-  if (!(step_s == 0.0 || (step_s >= 1.0 && step_s <= 600.0)))
-    throw std::invalid_argument("--step-s = " + std::to_string(step_s) +
+  if (!(robust.step_s == 0.0 || (robust.step_s >= 1.0 && robust.step_s <= 600.0)))
+    throw std::invalid_argument("--step-s = " + std::to_string(robust.step_s) +
                                 " is invalid: expected 0 (automatic) or a number in [1, 600] s");
   commands::check_screen_cdm_options(cdm, false);  // catalog objects carry no radii
 }
 
 void apply_param_values(const std::vector<ParamValue>& values, ScreenCatalogRequest* req) {
   const std::pair<const char*, double*> fields[] = {
-      {"span_s", &req->span_s}, {"robust.threshold_m", &req->threshold_m}, {"robust.step_s", &req->step_s}};
+      {"span_s", &req->span_s}, {"robust.threshold_m", &req->robust.threshold_m}, {"robust.step_s", &req->robust.step_s}};
   for (const ParamValue& v : values) {
     const ParamSpec* spec = v.key == "span_s"
                                 ? config::find_param_spec(screen_scenario_params(), "", v.key)
@@ -171,7 +176,7 @@ ScreenCatalogResult catalog_result(const ScreenCatalogRequest& req, const conjun
   res.stats = r.stats;
   res.events = catalog_events(r, s);
   if (!req.cdm.dir.empty() && req.rank == 0) {  // the other ranks hold only their part
-    const commands::ScreenCdmRun run{s.start_j2000_s, req.span_s, req.threshold_m, "catalog " + req.source};
+    const commands::ScreenCdmRun run{s.start_j2000_s, req.span_s, req.robust.threshold_m, "catalog " + req.source};
     res.cdm = commands::screen_event_cdms(req.cdm, run,
                                             catalog_screening_events(r.events, s, req.catalog.objects, so));
   }
@@ -186,11 +191,11 @@ ScreenCatalogResult run_windowed(const ScreenCatalogRequest& req) {
   const double start_s = screen_start_j2000_s(req);
   const conjunction::ScreenOptions base = base_options(req);
   const std::vector<sgp4::MeanElements> kept = conjunction::prefilter_primary(
-      req.catalog.objects, req.primary_norad, start_s, req.span_s, req.threshold_m, &counts, base.threads,
+      req.catalog.objects, req.primary_norad, start_s, req.span_s, req.robust.threshold_m, &counts, base.threads,
       req.path_filter);
   const auto t1 = Clock::now();
   const conjunction::PrimaryWindowScreen w = conjunction::screen_primary_windows(kept, req.primary_norad, start_s, req.span_s,
-                                                       base, conjunction::TimeFilterOptions{req.threshold_m});
+                                                       base, conjunction::TimeFilterOptions{req.robust.threshold_m});
   const auto t2 = Clock::now();
   if (req.progress) req.progress("\n");
   if (req.diagnostic)

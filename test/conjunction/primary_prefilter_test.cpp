@@ -26,11 +26,11 @@ sgp4::Catalog shipped() { return testing::shipped_catalog(); }
 ScreenCatalogResult screen(const sgp4::Catalog& cat, long primary, double span_s, bool prefilter,
                            double threshold_m = 5000.0) {
   ScreenCatalogRequest req;
-  req.threshold_m = threshold_m;
+  req.robust.threshold_m = threshold_m;
   req.catalog = cat;
   req.primary_norad = primary;
   req.span_s = span_s;
-  req.step_s = 60.0;  // the same grid with and without the prefilter (auto_step_s depends on N)
+  req.robust.step_s = 60.0;  // the same grid with and without the prefilter (auto_step_s depends on N)
   req.threads = 2;
   req.prefilter = prefilter;
   return run_screen_catalog(req);

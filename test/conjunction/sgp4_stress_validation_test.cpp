@@ -112,7 +112,7 @@ ScreenCatalogResult screen(const std::vector<sgp4::MeanElements>& cat, double sp
   req.catalog.objects = cat;
   req.primary_norad = primary;
   req.span_s = span_s;
-  req.threshold_m = kThresholdM;
+  req.robust.threshold_m = kThresholdM;
   req.threads = 2;
   req.validate();
   return run_screen_catalog(req);

@@ -108,16 +108,23 @@ std::string to_text(const ScreenObjectsResult& r);
 
 // ---------------------------------------------------------------- catalog mode
 
+/// The screener's options for a catalog: threshold 5000 m, automatic grid step, WGS-72 (the
+/// elements' Earth), no warning radius (catalogs carry no sizes: the threshold alone).
+conjunction::ScreenOptions catalog_screen_options();
+
 struct ScreenCatalogRequest {
   sgp4::Catalog catalog;          ///< the element sets read (bad entries counted)
   std::string source;             ///< the file (echoed)
   long primary_norad = -1;        ///< >= 0: screen this object against the catalog
   double span_s = 86400.0;        ///< from the start, (0, 31 d]
-  double threshold_m = 5000.0;    ///< report misses <= this, (0, 1e8]
-  double step_s = 0.0;            ///< grid step; 0: auto_step_s(N), else [1, 600]
+  /// The screener's options themselves (robust_screen.hpp), not a copy of some of them:
+  /// robust.threshold_m reports misses <= this, (0, 1e8]; robust.step_s is the grid step,
+  /// 0: auto_step_s(N), else [1, 600]. The screen sets their motion, primary, threads and
+  /// progress from the fields of this request.
+  conjunction::ScreenOptions robust = catalog_screen_options();
   std::string start_utc;          ///< empty: the latest element epoch
   int threads = 0;                ///< 0: hardware concurrency
-  /// With a primary: set aside the objects that can never come within threshold_m of it
+  /// With a primary: set aside the objects that can never come within robust.threshold_m of it
   /// before propagating (primary_prefilter.hpp); false screens every object.
   bool prefilter = true;
   /// With a primary and the prefilter: the orbit-path filter after the perigee/apogee one
