@@ -39,20 +39,31 @@ const char* event_problem_name(EventProblem p) noexcept {
   return "?";
 }
 
+namespace {
+
+// Thresholds in (0, 1] with the post-burn target at or below the red one, and the radius.
+bool limits_in_range(const ConjunctionEvent& e) noexcept {
+  const bool thresholds = pc_in_range(e.pc_red) && pc_in_range(e.pc_target) &&
+                          e.pc_target <= e.pc_red;
+  return thresholds && e.hbr_m > 0.0 && e.hbr_m <= EventLimits::kMaxHbrM;
+}
+
+// The burn window ends at or before TCA and the veto deadline at or before its end.
+bool window_ordered(const ConjunctionEvent& e) noexcept {
+  return e.burn_start_us < e.burn_end_us && e.burn_end_us <= e.tca_us &&
+         e.veto_deadline_us <= e.burn_end_us;
+}
+
+}  // namespace
+
 EventProblem check_event(const ConjunctionEvent& e, std::int64_t now_us) noexcept {
   if (e.event_id <= 0 || e.version <= 0) return EventProblem::kBadId;
   if (!all_finite(e)) return EventProblem::kNotFinite;
-  const bool thresholds = pc_in_range(e.pc_red) && pc_in_range(e.pc_target) &&
-                          e.pc_target <= e.pc_red;
-  if (!state_in_range(e.x1_eci) || !state_in_range(e.x2_eci) || !thresholds ||
-      !(e.hbr_m > 0.0 && e.hbr_m <= EventLimits::kMaxHbrM)) {
+  if (!state_in_range(e.x1_eci) || !state_in_range(e.x2_eci) || !limits_in_range(e)) {
     return EventProblem::kOutOfRange;
   }
   if (!symmetric(e.cov1_eci) || !symmetric(e.cov2_eci)) return EventProblem::kAsymmetric;
-  if (!(e.burn_start_us < e.burn_end_us && e.burn_end_us <= e.tca_us &&
-        e.veto_deadline_us <= e.burn_end_us)) {
-    return EventProblem::kBadWindow;
-  }
+  if (!window_ordered(e)) return EventProblem::kBadWindow;
   if (!(e.tca_us > now_us && e.tca_us - now_us <= EventLimits::kMaxLeadUs)) {
     return EventProblem::kTcaNotAhead;
   }
