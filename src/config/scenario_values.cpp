@@ -12,7 +12,7 @@
 
 namespace evade::config {
 
-using json = nlohmann::json;
+using nlohmann::json;
 using detail::fmt;
 using detail::join;
 
