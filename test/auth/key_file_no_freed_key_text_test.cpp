@@ -28,20 +28,7 @@
 namespace evade::auth {
 namespace {
 
-using test::exists;
-using test::key_text_in;
-using test::mode_of;
-using test::read_bytes;
-using test::runtime_error_text;
-using test::TempDir;
-using test::to_hex;
-using test::bytes_of;
-using test::expect_no_key_text;
-using test::hex_a;
-using test::hex_b;
-using test::KeyFile;
-
-// Every path of read_key_file, on success and on each refusal, frees its heap blocks only
+using namespace test;  // the shared fixtures and helpers of test/auth
 // after wiping the key text and key bytes out of them.
 TEST_F(KeyFile, NoFreedBufferHoldsKeyTextOnSuccessOrOnAnyError) {
   const KeyRecord k = generate_key(4, KeyRole::kCommand);

@@ -32,18 +32,7 @@
 namespace evade::auth {
 namespace {
 
-using test::exists;
-using test::key_text_in;
-using test::mode_of;
-using test::read_bytes;
-using test::runtime_error_text;
-using test::TempDir;
-using test::to_hex;
-using test::bytes_of;
-using test::expect_no_key_text;
-using test::hex_a;
-using test::hex_b;
-using test::KeyFile;
+using namespace test;  // the shared fixtures and helpers of test/auth
 
 TEST_F(KeyFile, GeneratedKeysOfEveryRoleWrittenAndReadBackAreTheSameKeys) {
   const KeyRecord cmd = generate_key(7, KeyRole::kCommand);

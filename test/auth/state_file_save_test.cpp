@@ -25,20 +25,7 @@
 namespace evade::auth {
 namespace {
 
-using test::AuthStateFile;
-using test::exists;
-using test::kCmdSlot;
-using test::kTel;
-using test::mode_of;
-using test::read_bytes;
-using test::runtime_error_text;
-using test::to_hex;
-
-// The command ARSN and the state of key id in r.
-using test::arsn;
-using test::state;
-
-// ---- save ----
+using namespace test;  // the shared fixtures and helpers of test/auth
 
 TEST_F(AuthStateFile, SaveRemovesAFilePlantedAtTheTemporaryName) {
   KeyRing r = initialized();
