@@ -20,11 +20,22 @@ endfunction()
 # contraction of a*b+c into a fused multiply-add, on every target. GCC contracts by default in
 # C++ wherever the CPU has FMA (aarch64, s390x; not x86-64's baseline, where the flag changes
 # no instruction), and a fused result rounds once where x86-64 rounds twice: with it off, the
-# guidance law computes the same bits on every target. The flight modules, the guidance node
-# and the test programs (which inline the same header code) get it.
-set(EVADE_FLIGHT_FP_MODULES core auth dynamics guidance autonomy assessment guidance_lcm)
+# guidance law computes the same bits on every target. The flight modules, the scenario
+# reader and the simulator they are checked in on every target (test/cross/
+# same_guidance_test.cpp), the guidance node and the test programs (which inline the same
+# header code) get it.
+set(EVADE_FLIGHT_FP_MODULES core auth config dynamics guidance autonomy sim assessment guidance_lcm)
+# Eigen fuses on its own where the compiler would not: its NEON packet multiply-add for
+# doubles is vfmaq_f64 whenever __ARM_FEATURE_FMA is defined (Eigen/src/Core/arch/NEON/
+# PacketMath.h), which every aarch64 compiler defines, so a 3x3 product's packet half was fused
+# and its scalar third not (seed3's first burn came out 1 ulp from x86-64's in
+# same_guidance_test). Flight code on aarch64 undefines the macro: Eigen keeps its two-double
+# packets (SSE2's width, the same order of operations) and multiplies and adds separately.
 function(evade_set_flight_fp target)
   target_compile_options(${target} PRIVATE -ffp-contract=off)
+  if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
+    target_compile_options(${target} PRIVATE -U__ARM_FEATURE_FMA)
+  endif()
 endfunction()
 
 # The stack report (scripts/stack_check, docs/GUIDANCE_NODE.md NODE-RT-6): with
