@@ -58,6 +58,21 @@ def test_catalog_text_names_each_bad_entry(repo):
     assert p.issues == cat.issues and p.r_m.shape == (len(cat), 2, 3)
 
 
+def test_latin1_and_control_character_titles(tmp_path):
+    # Issue 46: a 3LE title in Latin-1 (0xC9) is read as Latin-1 ('É'), not left as bytes that
+    # raised UnicodeDecodeError in .names; a control character refuses the title at its column.
+    sets = ("1 25544U 98067A   08264.51782528 -.00002182  00000-0 -11606-4 0  2927\n"
+            "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.72125391563537\n")
+    path = tmp_path / "latin1.tle"
+    path.write_bytes(b"ISS \xc9TOILE\n" + sets.encode())
+    cat = evade.sgp4.read_catalog(path)
+    assert cat.names == ["ISS \u00c9TOILE"] and cat.bad_entries == 0
+    assert evade.sgp4.propagate(path, None, [0.0]).names == ["ISS \u00c9TOILE"]
+    cat = evade.sgp4.read_catalog("ISS\x07\n" + sets)
+    assert cat.names == [""] and cat.bad_entries == 1
+    assert "1:4: expected a title of printable characters" in cat.issues[0]
+
+
 def test_errors_per_instant_with_nan_states():
     # Two high-drag element sets of SGP4-VER (Vallado et al. 2006): 22312 leaves the theory's
     # domain (mean eccentricity, code 1) 29 400 s after its epoch, 28872 decays (code 6) by

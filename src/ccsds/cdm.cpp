@@ -9,8 +9,27 @@
 #include <Eigen/Eigenvalues>
 
 #include "evade/ccsds/internal/cdm_keyword_tables.hpp"
+#include "evade/sgp4/text_fields.hpp"
 
 namespace evade::ccsds {
+
+std::string cdm_text_as_utf8(const std::string& text) {
+  std::string out;
+  long control = 0;
+  const int at = sgp4::text_to_utf8(text, &out, &control, "\t\r\n");
+  if (at == 0) return out;
+  const auto pos = static_cast<std::size_t>(at - 1);
+  const std::size_t nl = pos == 0 ? std::string::npos : text.rfind('\n', pos - 1);
+  const std::size_t col0 = nl == std::string::npos ? pos : pos - nl - 1;
+  long line = 1;
+  for (std::size_t i = 0; i < pos; ++i) line += text[i] == '\n' ? 1 : 0;
+  char msg[160];
+  (void)std::snprintf(msg, sizeof msg,
+                      "CDM line %ld, column %zu: control character U+%04lX; expected printable "
+                      "text (UTF-8 or Latin-1)",
+                      line, col0 + 1, static_cast<unsigned long>(control));
+  throw CdmError(msg);
+}
 
 const CdmItem* CdmSection::find(const std::string& key) const {
   for (const auto& it : items)

@@ -79,7 +79,8 @@ CdmItem parse_line(const std::string& raw, int line) {
 
 }  // namespace
 
-Cdm read_cdm_kvn(const std::string& text) {
+Cdm read_cdm_kvn(const std::string& raw_text) {
+  const std::string text = cdm_text_as_utf8(raw_text);
   Reader r;
   std::istringstream in(text);
   std::string raw;

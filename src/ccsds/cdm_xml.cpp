@@ -221,7 +221,8 @@ void write_block(std::ostringstream& os, const char* tag, const CdmSection& s,
 
 }  // namespace
 
-Cdm read_cdm_xml(const std::string& text) {
+Cdm read_cdm_xml(const std::string& raw_text) {
+  const std::string text = cdm_text_as_utf8(raw_text);
   const Node root = Parser(text).document();
   if (root.name != "cdm") xml_fail(root.line, root.name, "expected the root element <cdm>");
   const auto v = root.attrs.find("version");

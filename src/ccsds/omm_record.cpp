@@ -2,6 +2,7 @@
 // (OMM: metadata, mean Keplerian elements, TLE-related parameters, units of each keyword).
 #include "evade/ccsds/omm_record.hpp"
 
+#include <cstdio>
 #include <set>
 
 #include "evade/sgp4/catalog.hpp"
@@ -17,10 +18,27 @@ using sgp4::trim;
 using sgp4::parse_plain_decimal;
 using sgp4::parse_plain_integer;
 using sgp4::parse_iso_epoch;
+using sgp4::title_to_utf8;
 namespace {
 
 [[noreturn]] void fail(const std::string& source, const OmmValue& v, const std::string& expected) {
   throw ReadError(ReadIssue{source, v.line, v.column, expected, v.text});
+}
+
+// A text value (a name or an id) as UTF-8 (sgp4::title_to_utf8: UTF-8 kept, anything else read
+// as Latin-1), "" when absent; a control character in it is an error at the value's position.
+std::string text_value(const OmmRecord& rec, const std::string& key, const std::string& source) {
+  const auto it = rec.values.find(key);
+  if (it == rec.values.end()) return "";
+  std::string out;
+  long control = 0;
+  if (title_to_utf8(trim(it->second.text), &out, &control) > 0) {
+    char cp[16];
+    (void)std::snprintf(cp, sizeof cp, "U+%04lX", static_cast<unsigned long>(control));
+    throw ReadError(ReadIssue{source, it->second.line, it->second.column,
+                              key + " of printable characters (UTF-8 or Latin-1)", cp});
+  }
+  return out;
 }
 
 const OmmValue& required(const OmmRecord& rec, const std::string& key, const std::string& source) {
@@ -82,8 +100,8 @@ MeanElements mean_elements_from_omm(const OmmRecord& rec, const std::string& sou
   check_metadata(rec, source);
   MeanElements m;
   m.source_line = rec.line;
-  if (rec.values.count("OBJECT_NAME")) m.name = trim(rec.values.at("OBJECT_NAME").text);
-  if (rec.values.count("OBJECT_ID")) m.object_id = trim(rec.values.at("OBJECT_ID").text);
+  m.name = text_value(rec, "OBJECT_NAME", source);
+  m.object_id = text_value(rec, "OBJECT_ID", source);
   const OmmValue& epoch = required(rec, "EPOCH", source);
   if (!parse_iso_epoch(epoch.text, m.epoch_year, m.epoch_day_of_year))
     fail(source, epoch, "EPOCH as an ISO 8601 UTC time YYYY-MM-DDThh:mm:ss[.f] (or YYYY-DDDThh:mm:ss) in 1957..2099");

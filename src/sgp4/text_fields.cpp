@@ -153,6 +153,83 @@ bool parse_iso_time(const std::string& time, double& seconds_of_day) {
 
 }  // namespace
 
+namespace {
+
+// The code point of the UTF-8 sequence at s[i] (advancing i), or -1 if it is not well-formed
+// UTF-8 (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF).
+long utf8_code_point(const std::string& s, std::size_t& i) {
+  const auto b0 = static_cast<unsigned char>(s[i]);
+  int n = 0;
+  long cp = 0;
+  if (b0 < 0x80) { ++i; return b0; }
+  if (b0 >= 0xC2 && b0 <= 0xDF) { n = 1; cp = b0 & 0x1F; }
+  else if (b0 >= 0xE0 && b0 <= 0xEF) { n = 2; cp = b0 & 0x0F; }
+  else if (b0 >= 0xF0 && b0 <= 0xF4) { n = 3; cp = b0 & 0x07; }
+  else return -1;
+  if (i + static_cast<std::size_t>(n) >= s.size()) return -1;  // the sequence is cut
+  for (int k = 1; k <= n; ++k) {
+    const auto b = static_cast<unsigned char>(s[i + static_cast<std::size_t>(k)]);
+    if ((b & 0xC0) != 0x80) return -1;
+    cp = (cp << 6) | (b & 0x3F);
+  }
+  static const long kMin[] = {0, 0x80, 0x800, 0x10000};
+  if (cp < kMin[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return -1;
+  i += static_cast<std::size_t>(n) + 1;
+  return cp;
+}
+
+bool is_control(long cp, const char* allowed) {
+  if (cp >= 0x20 && !(cp >= 0x7F && cp <= 0x9F)) return false;
+  for (const char* a = allowed; *a != '\0'; ++a) {
+    if (cp == static_cast<unsigned char>(*a)) return false;
+  }
+  return true;
+}
+
+bool valid_utf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    if (utf8_code_point(s, i) < 0) return false;
+  }
+  return true;
+}
+
+int refuse(std::string* out, long* control, long cp, std::size_t at) {
+  out->clear();
+  if (control != nullptr) *control = cp;
+  return static_cast<int>(at) + 1;
+}
+
+}  // namespace
+
+int text_to_utf8(const std::string& raw, std::string* out, long* control, const char* allowed) {
+  out->clear();
+  if (valid_utf8(raw)) {
+    for (std::size_t i = 0; i < raw.size();) {
+      const std::size_t at = i;
+      const long cp = utf8_code_point(raw, i);
+      if (is_control(cp, allowed)) return refuse(out, control, cp, at);
+    }
+    *out = raw;
+    return 0;
+  }
+  out->reserve(raw.size() * 2);
+  for (std::size_t i = 0; i < raw.size(); ++i) {  // Latin-1: the byte is the code point
+    const auto b = static_cast<unsigned char>(raw[i]);
+    if (is_control(b, allowed)) return refuse(out, control, b, i);
+    if (b < 0x80) {
+      out->push_back(static_cast<char>(b));
+    } else {
+      out->push_back(static_cast<char>(0xC0 | (b >> 6)));
+      out->push_back(static_cast<char>(0x80 | (b & 0x3F)));
+    }
+  }
+  return 0;
+}
+
+int title_to_utf8(const std::string& raw, std::string* out, long* control) {
+  return text_to_utf8(raw, out, control, "");
+}
+
 bool parse_iso_epoch(const std::string& text, int& year, double& day_of_year) {
   std::string t = trim(text);
   if (!t.empty() && t.back() == 'Z') t.pop_back();

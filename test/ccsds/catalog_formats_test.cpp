@@ -119,6 +119,26 @@ TEST(OmmReaders, BadValuesAreRejectedWithLineAndKeyword) {
   EXPECT_EQ(v.issues[0].column, 5);
 }
 
+// Issue 46: OBJECT_NAME and OBJECT_ID reach JSON, CSV and Python strings: kept in UTF-8, read as
+// Latin-1 when not UTF-8 (0xC9 is 'E' acute), refused at their line and column with a control.
+TEST(OmmReaders, NamesInLatin1AreDecodedAndControlCharactersRefused) {
+  std::string kvn = kKvn;
+  kvn.replace(kvn.find("VANGUARD 1"), 10, "VANGUARD \xC9");
+  const Catalog c = read_omm_kvn(kvn, "l.kvn");
+  ASSERT_EQ(c.objects.size(), 1u);
+  EXPECT_EQ(c.objects[0].name, "VANGUARD \xC3\x89");
+  kvn = kKvn;
+  kvn.replace(kvn.find("VANGUARD 1"), 10, "VANGUARD\x1B" "1");
+  const Catalog e = read_omm_kvn(kvn, "e.kvn");
+  ASSERT_EQ(e.objects.size(), 0u);
+  ASSERT_EQ(e.issues.size(), 1u);
+  EXPECT_EQ(e.issues[0].line, 4);
+  EXPECT_EQ(e.issues[0].column, 15);
+  EXPECT_EQ(e.issues[0].message(),
+            "e.kvn:4:15: expected OBJECT_NAME of printable characters (UTF-8 or Latin-1), "
+            "found 'U+001B'");
+}
+
 // Found by fuzzing (docs/ASSURANCE.md): a JSON number beyond double made the JSON parser
 // throw out_of_range (not a parse error), which escaped read_gp_json. It is now one issue
 // naming the number's line and column, like any other malformed JSON.

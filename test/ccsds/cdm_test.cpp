@@ -167,6 +167,27 @@ TEST(Cdm, UnitSpellingsOfACovarianceTerm) {
     EXPECT_FALSE(unit_ok(u)) << u;
 }
 
+// Issue 46: a CDM's values reach JSON and Python strings. A Latin-1 value (0xC9) is read as
+// 'E' acute in UTF-8, in KVN and XML alike; a control character is refused with line and
+// column (it made `evade assess --cdm --json` exit 1 with the JSON library's type_error 316).
+TEST(Cdm, Latin1ValuesAreReadAsUtf8AndControlCharactersRefusedWithLineAndColumn) {
+  const std::string kvn = edit(shipped(), "MESSAGE_ID", "MESSAGE_ID = A09 \xC9");
+  const Cdm a = read_cdm_kvn(kvn);
+  EXPECT_EQ(cdm_value(a.header, "MESSAGE_ID"), "A09 \xC3\x89");
+  const Cdm x = read_cdm_xml(write_cdm_xml(a));  // UTF-8 written, read back unchanged
+  EXPECT_EQ(cdm_value(x.header, "MESSAGE_ID"), "A09 \xC3\x89");
+  std::string latin1_xml = write_cdm_xml(a);
+  latin1_xml.replace(latin1_xml.find("A09 \xC3\x89"), 6, "A09 \xC9");
+  EXPECT_EQ(cdm_value(read_cdm_xml(latin1_xml).header, "MESSAGE_ID"), "A09 \xC3\x89");
+  try {
+    (void)read_cdm_kvn(edit(shipped(), "MESSAGE_ID", "MESSAGE_ID = A09\x1B"));
+    ADD_FAILURE() << "a control character was accepted";
+  } catch (const CdmError& e) {
+    EXPECT_STREQ(e.what(), "CDM line 5, column 17: control character U+001B; expected printable "
+                           "text (UTF-8 or Latin-1)");
+  }
+}
+
 TEST(Cdm, MalformedXmlNamesElementAndLine) {
   std::string xml = write_cdm_xml(read_cdm_kvn(shipped()));
   const auto p = xml.find("<X units=\"km\">153.446765</X>");

@@ -67,5 +67,42 @@ TEST(TleReader, FieldErrorsNameTheColumn) {
   EXPECT_EQ(e.issues[0].column, 21);
 }
 
+// Issue 46: the title line is text that reaches JSON, CSV and Python strings. UTF-8 is kept;
+// a title that is not UTF-8 is read as Latin-1 (ISO 8859-1, the encoding of older catalog
+// exports), so 0xC9 is 'É'; a control character refuses the title with its line and column.
+TEST(TleReader, TitleInUtf8IsKeptAndInLatin1IsDecodedToUtf8) {
+  const Catalog u = read_tle("ISS \xC3\x89TOILE\n" + kIss1 + "\n" + kIss2 + "\n", "u.tle");
+  ASSERT_EQ(u.objects.size(), 1u);
+  EXPECT_EQ(u.objects[0].name, "ISS \xC3\x89TOILE");
+  const Catalog l = read_tle("ISS \xC9TOILE \xFF\n" + kIss1 + "\n" + kIss2 + "\n", "l.tle");
+  ASSERT_EQ(l.objects.size(), 1u);
+  EXPECT_EQ(l.bad_entries, 0);
+  EXPECT_EQ(l.objects[0].name, "ISS \xC3\x89TOILE \xC3\xBF");
+  std::string out;
+  EXPECT_EQ(title_to_utf8("\xE2\xA2", &out), 0);  // a cut UTF-8 sequence: Latin-1
+  EXPECT_EQ(out, "\xC3\xA2\xC2\xA2");
+  EXPECT_EQ(title_to_utf8("\xED\xA0\xBF", &out), 0);  // a UTF-16 surrogate is not UTF-8
+  EXPECT_EQ(out, "\xC3\xAD\xC2\xA0\xC2\xBF");
+  EXPECT_EQ(title_to_utf8("\xC0\xAF", &out), 0);  // an overlong '/' is not UTF-8 either
+  EXPECT_EQ(out, "\xC3\x80\xC2\xAF");
+}
+
+TEST(TleReader, TitleWithAControlCharacterIsRefusedWithLineAndColumn) {
+  const Catalog c = read_tle("ISS\x07 BELL\n" + kIss1 + "\n" + kIss2 + "\n", "c.tle");
+  ASSERT_EQ(c.bad_entries, 1);
+  EXPECT_EQ(c.issues[0].line, 1);
+  EXPECT_EQ(c.issues[0].column, 4);
+  EXPECT_NE(c.issues[0].message().find(
+                "c.tle:1:4: expected a title of printable characters (UTF-8 or Latin-1), "
+                "found 'U+0007'"),
+            std::string::npos) << c.issues[0].message();
+  ASSERT_EQ(c.objects.size(), 1u);  // the element set is read, without the refused title
+  EXPECT_EQ(c.objects[0].name, "");
+  std::string out;
+  EXPECT_EQ(title_to_utf8("A\xC2\x85", &out), 2);  // U+0085 (NEL, a C1 control) in UTF-8
+  EXPECT_EQ(title_to_utf8("AB\x85", &out), 3);      // the same in Latin-1
+  EXPECT_EQ(title_to_utf8("A\x7F", &out), 2);
+}
+
 }  // namespace
 }  // namespace evade::sgp4

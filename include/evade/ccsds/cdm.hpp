@@ -67,6 +67,13 @@ std::string cdm_keyword_unit(const std::string& key);
 /// Keywords of a section in the standard's order.
 const std::vector<std::string>& cdm_section_keywords(CdmSectionId id);
 
+/// The text of a CDM (KVN or XML) as UTF-8, as the readers take it: valid UTF-8 is kept, any
+/// other text is read as Latin-1 (ISO 8859-1) and written as UTF-8, so that every value reaches
+/// JSON and Python as valid text. A control character other than tab, CR and LF throws
+/// CdmError "CDM line L, column C: control character U+XXXX; expected printable text (UTF-8 or
+/// Latin-1)".
+std::string cdm_text_as_utf8(const std::string& text);
+
 /// Throws CdmError naming the keyword and line of the first problem. A unit spelled
 /// differently from the standard but equal to it (m**3/kg/s for m**3/(kg*s), the spelling of
 /// other implementations) is accepted: cdm_unit_notes lists each such item.

@@ -17,6 +17,17 @@ long digits_value(const std::string& digits);
 /// "1.5E-4", "42"), surrounded by blanks only. False for anything else.
 bool parse_plain_decimal(const std::string& field, double& out);
 
+/// A catalog title (an object's name) as UTF-8 in *out: valid UTF-8 is kept as it is; any other
+/// text is read as Latin-1 (ISO 8859-1: each byte the code point of its value, as older catalog
+/// exports write names) and written as UTF-8. Returns 0, or the 1-based byte column of the first
+/// control character (U+0000-U+001F, U+007F-U+009F), which no title may hold (*out is then "",
+/// and *control, if given, that character's code point).
+int title_to_utf8(const std::string& raw, std::string* out, long* control = nullptr);
+
+/// title_to_utf8 for a whole text (a CDM, an OMM file): the same decoding, the control
+/// characters in `allowed` (e.g. "\t\r\n") let through. Returns 0 or the 1-based byte offset.
+int text_to_utf8(const std::string& raw, std::string* out, long* control, const char* allowed);
+
 /// An integer (optionally signed) surrounded by blanks only.
 bool parse_plain_integer(const std::string& field, long& out);
 
