@@ -29,6 +29,10 @@ TEST(Validate, AcceptsGoodAnglesAndTheRangeEnds) {
   a.elevation_rad = guidance::MeasurementLimits::kMaxElevationRad;
   a.azimuth_rad = -guidance::MeasurementLimits::kMaxAbsAzimuthRad;
   EXPECT_EQ(validate(a), Reason::kOk);
+  a.sigma_angle_rad = guidance::MeasurementLimits::kMaxSigmaAngleRad;  // 0.5 rad, the .lcm's limit
+  a.has_range = true;
+  a.range_m = guidance::MeasurementLimits::kMaxRangeM;
+  EXPECT_EQ(validate(a), Reason::kOk);
   a.valid = false;  // "no detection" is well formed: the law decides
   EXPECT_EQ(validate(a), Reason::kOk);
 }
@@ -45,6 +49,11 @@ TEST(Validate, RejectsEachBadAngleField) {
       {[](evade_angles_t& a, double) { a.elevation_rad = 1.5708; }, Reason::kOutOfRange},
       {[](evade_angles_t& a, double) { a.azimuth_rad = 6.3; }, Reason::kOutOfRange},
       {[](evade_angles_t& a, double) { a.sigma_angle_rad = -1e-9; }, Reason::kOutOfRange},
+      // Issue 46: a sensor with a 0.6 rad 1-sigma has every message refused; the .lcm comment
+      // and NODE-IN-2 now say <= 0.5 rad (docs.LcmCommentsGiveTheNodesLimitsAndDeclaredConstants).
+      {[](evade_angles_t& a, double) { a.sigma_angle_rad = 0.6; }, Reason::kOutOfRange},
+      {[](evade_angles_t& a, double) { a.has_range = true; a.range_m = 1.0e8 * (1 + 1e-15); },
+       Reason::kOutOfRange},
       {[](evade_angles_t& a, double n) { a.has_rates = true; a.azimuth_rate_radps = n; },
        Reason::kNotFinite},
       {[](evade_angles_t& a, double) { a.has_rates = true; a.elevation_rate_radps = 2e6; },
