@@ -1,14 +1,14 @@
 // `evade sim`: closed-loop close-range evasion simulation (paper 000, Yao & Wang 2012, sec. 4
 // and Table 2). The command parses its flags, calls evade::sim (run_sim_command, or
 // run_sim_plan with --plan), with the guidance in evade_guidance_node over LCM through
-// lcm_link::sim_lcm_guidance (--lcm URL) and the Monte Carlo over MPI ranks through
+// lcm_link::sim_lcm_guidance (--lcm-url URL) and the Monte Carlo over MPI ranks through
 // distributed::run_monte_carlo_campaign (--runs under mpirun), writes the time history the
 // user asked for (--csv, --plot) and prints the result's JSON or text.
 //
 //   evade sim --scenario seed0 --accel 1 --detect 10 --json
 //   evade sim --scenario seed0 --noise-rad 50e-6 --no-rates --runs 200 --seed 7 --json
 //   evade sim --scenario seed0 --csv run.csv --plot run.png
-//   evade sim --scenario seed0 --lcm URL --realtime --json   (node at its own fixed rate)
+//   evade sim --scenario seed0 --lcm-url URL --realtime --json   (node at its own fixed rate)
 //   evade sim --plan plan.json --plan-epoch-s 10 --json       (a burn plan)
 #include <algorithm>
 #include <cmath>
@@ -82,7 +82,7 @@ void check_plan_options(const SimOptions& o) {
   if (!o.plan_file.empty() &&
       (!o.lcm_url.empty() || o.runs > 0 || !o.csv.empty() || !o.plot.empty())) {
     throw std::invalid_argument("--plan runs the plan in process and cannot be combined with "
-                                "--lcm, --runs, --csv or --plot (to fly a plan on the node, "
+                                "--lcm-url, --runs, --csv or --plot (to fly a plan on the node, "
                                 "publish it with `evade plan ... --publish`)");
   }
 }
@@ -93,14 +93,14 @@ void check_lcm_options(const SimOptions& o) {
                                 " outside (0, 3600]");
   }
   if (o.realtime && o.lcm_url.empty()) {
-    throw std::invalid_argument("--realtime needs --lcm URL (a node running at its own rate)");
+    throw std::invalid_argument("--realtime needs --lcm-url URL (a node running at its own rate)");
   }
   if (o.realtime && o.runs > 0) throw std::invalid_argument("--runs cannot be combined with --realtime");
   if (!o.key_file.empty() && o.lcm_url.empty()) {
-    throw std::invalid_argument("--key needs --lcm URL (it signs the messages sent to the node)");
+    throw std::invalid_argument("--key needs --lcm-url URL (it signs the messages sent to the node)");
   }
   if (o.runs > 0 && !o.lcm_url.empty()) {
-    throw std::invalid_argument("--runs cannot be combined with --lcm");
+    throw std::invalid_argument("--runs cannot be combined with --lcm-url");
   }
 }
 
@@ -150,7 +150,7 @@ void set_monte_carlo(const SimOptions& o, commands::SimCommandRequest* req) {
   };
 }
 
-// --lcm URL [--realtime] [--key FILE]: the guidance in evade_guidance_node.
+// --lcm-url URL [--realtime] [--key FILE]: the guidance in evade_guidance_node.
 void set_guidance(const SimOptions& o, commands::SimCommandRequest* req) {
   if (o.lcm_url.empty()) return;
   req->guidance = lcm_link::sim_lcm_guidance(
@@ -241,17 +241,18 @@ evade::cli::Runner setup(CLI::App& app) {
   app.add_option("--plot", o->plot,
                  "draw the time history into this PNG (scripts/plot_sim.py; the CSV is --csv, "
                  "or PNG.csv beside it)");
-  app.add_option("--lcm", o->lcm_url,
-                 "run the guidance in evade_guidance_node over LCM at this URL");
+  app.add_option("--lcm-url,--lcm", o->lcm_url,
+                 "run the guidance in evade_guidance_node over LCM at this URL (--lcm: the old "
+                 "spelling, kept as an alias)");
   app.add_option("--lcm-lockstep", o->lockstep, "wait for the node's command every cycle")
       ->capture_default_str();
   app.add_option("--lcm-timeout-s", o->lcm_timeout_s, "LCM reply timeout [s]")
       ->capture_default_str();
   app.add_flag("--realtime", o->realtime,
-               "with --lcm: truth at wall-clock pace, the node at its own fixed rate "
+               "with --lcm-url: truth at wall-clock pace, the node at its own fixed rate "
                "(no lockstep); adds command_age_ms_* and sim_late_steps");
   app.add_option("--key", o->key_file,
-                 "with --lcm: sign nav, angles and the sim clock with this sensor key file "
+                 "with --lcm-url: sign nav, angles and the sim clock with this sensor key file "
                  "(`evade keygen --role sensor`; docs/SECURITY.md)");
   app.add_option("--key-id", o->key_id, "which sensor key of --key [-] (default: its only one)")
       ->check(CLI::Range(1, 2147483647));
