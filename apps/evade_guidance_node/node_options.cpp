@@ -5,6 +5,7 @@
 #include <time.h>
 
 #include <cstdint>
+#include <fstream>
 #include <stdexcept>
 
 #include "evade/auth/key_file.hpp"
@@ -108,7 +109,9 @@ guidance_lcm::NodeConfig make_node_config(const NodeOptions& o) {
     for (const auto& a : o.sets) sc.apply_override(a);
     config::read_params(sc, "guidance.", guidance::guidance_params(), &c.guidance);
   }
-  if (!o.config.empty()) {
+  if (!o.config.empty()) {  // a file of the node's keys, named as such when it is missing
+    if (!std::ifstream(o.config).good())
+      throw std::invalid_argument("--config: file '" + o.config + "' not found or unreadable");
     const config::Scenario s = config::Scenario::load(o.config);
     read_node_params(s, &c);
     s.check_all_used();
