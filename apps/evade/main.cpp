@@ -143,18 +143,34 @@ std::string unknown_command_message(int argc, char** argv) {
 }
 
 // The first argument no option or command took (a mistyped flag), with the command it was
-// given to ("" and "" if none). CLI11 checks required options before unexpected arguments,
-// so `evade keygen --bogus` would otherwise only say "--out is required".
-std::pair<std::string, std::string> first_unrecognized(const CLI::App& app,
-                                                       const std::string& path) {
+// given to ("" and "" if none) and that command's parser. CLI11 checks required options before
+// unexpected arguments, so `evade keygen --bogus` would otherwise only say "--out is required".
+struct Unrecognized {
+  std::string flag, path;
+  const CLI::App* app = nullptr;
+};
+Unrecognized first_unrecognized(const CLI::App& app, const std::string& path) {
   for (const std::string& a : app.remaining()) {
-    if (!a.empty() && a[0] == '-') return {a, path};
+    if (!a.empty() && a[0] == '-') return {a, path, &app};
   }
   for (const CLI::App* sub : app.get_subcommands()) {
-    auto r = first_unrecognized(*sub, path + " " + sub->get_name());
-    if (!r.first.empty()) return r;
+    Unrecognized r = first_unrecognized(*sub, path + " " + sub->get_name());
+    if (!r.flag.empty()) return r;
   }
-  return {"", ""};
+  return {};
+}
+
+// "unknown option" for u, with the command's nearest flag (edit distance <= 2) as a suggestion.
+std::string unknown_option_message(const Unrecognized& u) {
+  const std::string typed = u.flag.substr(0, u.flag.find('='));
+  std::vector<std::string> flags;
+  for (const CLI::Option* o : u.app->get_options()) {
+    for (const std::string& l : o->get_lnames()) flags.push_back("--" + l);
+  }
+  const std::string best = nearest(typed, flags);
+  const std::string msg = u.path + ": unknown option '" + u.flag + "'";
+  return best.empty() ? msg + " (see " + u.path + " --help)"
+                      : msg + "; did you mean '" + best + "'? (see " + u.path + " --help)";
 }
 
 // Diagnostics go to stderr; a failed print there has no recovery (there is nowhere else to
@@ -171,10 +187,9 @@ int parse_error_exit(CLI::App& app, const CLI::ParseError& e, int argc, char** a
       (void)std::fprintf(stderr, "%s\n", unknown.c_str());
       return 2;
     }
-    const auto [flag, cmd] = first_unrecognized(app, "evade");
-    if (!flag.empty()) {
-      (void)std::fprintf(stderr, "%s: unknown option '%s' (see %s --help)\n", cmd.c_str(),
-                         flag.c_str(), cmd.c_str());
+    const Unrecognized u = first_unrecognized(app, "evade");
+    if (!u.flag.empty()) {
+      (void)std::fprintf(stderr, "%s\n", unknown_option_message(u).c_str());
       return 2;
     }
   }
