@@ -181,7 +181,7 @@ Runner setup(CLI::App& app) {
   tle->excludes(omm);
   app.add_option("--primary", c.primary_norad, "with --tle/--omm: screen this NORAD id against the catalog [-]");
   add_parameter_flags(app, c);
-  app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC (default: latest element epoch)");
+  app.add_option("--start", c.start_utc, "with --tle/--omm: start UTC, ISO 8601 (YYYY-MM-DD[Thh:mm:ss[.f]][Z|+hh:mm|-hh:mm]; default: latest element epoch)");
   app.add_flag("--no-prefilter", c.no_prefilter,
                "with --primary: propagate every object (no perigee/apogee filter first)");
   app.add_flag("--no-time-filter", c.no_time_filter,

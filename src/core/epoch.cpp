@@ -92,6 +92,42 @@ CalendarUtc calendar_from_seconds_since_j2000(double t_s) {
   return c;
 }
 
+namespace {
+
+[[noreturn]] void bad_time(const std::string& text) {
+  throw std::invalid_argument("cannot parse UTC time '" + text +
+                              "' (expected ISO 8601: YYYY-MM-DD, YYYY-MM-DD hh:mm:ss[.fff] or "
+                              "YYYY-MM-DDThh:mm:ss[.fff], optionally followed by Z or +hh:mm/-hh:mm)");
+}
+
+// "hh", "hhmm" or "hh:mm" as hours 0..23 and minutes 0..59; false for anything else.
+bool offset_hours_minutes(std::string digits, int* hh, int* mm) {
+  if (digits.size() == 5 && digits[2] == ':') digits.erase(2, 1);
+  if (digits.size() != 2 && digits.size() != 4) return false;
+  for (const char ch : digits) {
+    if (ch < '0' || ch > '9') return false;
+  }
+  const auto two = [&](std::size_t i) { return (digits[i] - '0') * 10 + (digits[i + 1] - '0'); };
+  *hh = two(0);
+  *mm = digits.size() == 4 ? two(2) : 0;
+  return *hh <= 23 && *mm <= 59;
+}
+
+// The offset from UTC of a suffix "" / "Z" / "+hh:mm" / "-hh:mm" / "+hhmm" / "+hh" [s]; false
+// for anything else.
+bool utc_offset_s(const std::string& suffix, int* offset_s) {
+  *offset_s = 0;
+  if (suffix.empty() || suffix == "Z") return true;
+  int hh = 0;
+  int mm = 0;
+  if ((suffix[0] != '+' && suffix[0] != '-') || !offset_hours_minutes(suffix.substr(1), &hh, &mm))
+    return false;
+  *offset_s = (suffix[0] == '-' ? -1 : 1) * (hh * 3600 + mm * 60);
+  return true;
+}
+
+}  // namespace
+
 CalendarUtc parse_calendar_utc(const std::string& text) {
   CalendarUtc c;
   char sep = 0;
@@ -99,12 +135,23 @@ CalendarUtc parse_calendar_utc(const std::string& text) {
   // NOLINTNEXTLINE(cert-err34-c,bugprone-unchecked-string-to-number-conversion): %4d/%2d cannot overflow; validate() range-checks the %lf
   const int n = std::sscanf(text.c_str(), "%4d-%2d-%2d%c%2d:%2d:%lf%n", &c.year, &c.month, &c.day,
                             &sep, &c.hour, &c.minute, &c.second, &consumed);
-  if (n != 7 || (sep != ' ' && sep != 'T') || static_cast<size_t>(consumed) != text.size()) {
-    throw std::invalid_argument("cannot parse UTC time '" + text +
-                                "' (expected YYYY-MM-DD hh:mm:ss[.fff])");
+  if (n == 3 && text.size() == 10) {  // a date alone: its midnight
+    validate(c);
+    return c;
+  }
+  int offset_s = 0;
+  if (n != 7 || (sep != ' ' && sep != 'T') || consumed <= 0 ||
+      !utc_offset_s(text.substr(static_cast<std::size_t>(consumed)), &offset_s)) {
+    bad_time(text);
   }
   validate(c);
-  return c;
+  if (offset_s == 0) return c;
+  // Local time minus the offset, in whole minutes (exact in double), the seconds kept as read.
+  const double second = c.second;
+  c.second = 0.0;
+  CalendarUtc utc = calendar_from_seconds_since_j2000(seconds_since_j2000_from_calendar(c) - offset_s);
+  utc.second = second;
+  return utc;
 }
 
 std::string format_calendar_utc(const CalendarUtc& c) {

@@ -35,6 +35,33 @@ TEST(Epoch, RejectsOutOfRangeFieldsAndGarbage) {
   EXPECT_THROW(parse_calendar_utc("1999-10-01 00:00:61"), std::invalid_argument);
   EXPECT_THROW(parse_calendar_utc("yesterday"), std::invalid_argument);
   EXPECT_THROW(parse_calendar_utc("1999-10-01 00:00:00 junk"), std::invalid_argument);
+  EXPECT_THROW(parse_calendar_utc("1999-10-01T00:00:00+24:00"), std::invalid_argument);
+  EXPECT_THROW(parse_calendar_utc("1999-10-01T00:00:00+01:60"), std::invalid_argument);
+  EXPECT_THROW(parse_calendar_utc("1999-10-01T00:00:00+1"), std::invalid_argument);
+  EXPECT_THROW(parse_calendar_utc("1999-10-01T00:00:00ZZ"), std::invalid_argument);
+  EXPECT_THROW(parse_calendar_utc("1999-10-0"), std::invalid_argument);
+}
+
+// Issue 46: every time flag takes ISO 8601 as Python's start_utc does: 'T' or ' ', a trailing
+// Z, an offset from UTC (subtracted, across midnight and the year's end), a date alone.
+TEST(Epoch, Iso8601WithZOffsetsAndDateAloneIsTheSameUtcInstant) {
+  const auto same = [](const std::string& text, const CalendarUtc& want) {
+    const CalendarUtc c = parse_calendar_utc(text);
+    EXPECT_EQ(c.year, want.year) << text;
+    EXPECT_EQ(c.month, want.month) << text;
+    EXPECT_EQ(c.day, want.day) << text;
+    EXPECT_EQ(c.hour, want.hour) << text;
+    EXPECT_EQ(c.minute, want.minute) << text;
+    EXPECT_EQ(c.second, want.second) << text;  // exact: the seconds are kept as read
+  };
+  same("2026-11-15T00:00:00Z", {2026, 11, 15, 0, 0, 0.0});
+  same("2026-11-15 00:00:00.104192019Z", {2026, 11, 15, 0, 0, 0.104192019});
+  same("2026-11-15T01:30:00+01:30", {2026, 11, 15, 0, 0, 0.0});
+  same("2026-11-15T01:30:00+0130", {2026, 11, 15, 0, 0, 0.0});
+  same("2026-11-15T01:00:07.25+01", {2026, 11, 15, 0, 0, 7.25});
+  same("2026-12-31T23:00:00-05:00", {2027, 1, 1, 4, 0, 0.0});
+  same("2026-03-01T00:30:00+02:00", {2026, 2, 28, 22, 30, 0.0});
+  same("2026-11-15", {2026, 11, 15, 0, 0, 0.0});
 }
 
 }  // namespace

@@ -25,8 +25,10 @@ double julian_date_from_calendar(const CalendarUtc& c);
 double seconds_since_j2000_from_calendar(const CalendarUtc& c);
 /// Inverse of seconds_since_j2000_from_calendar.
 CalendarUtc calendar_from_seconds_since_j2000(double t_s);
-/// Parses "YYYY-MM-DD hh:mm:ss[.fff]" or "YYYY-MM-DDThh:mm:ss[.fff]"; throws
-/// std::invalid_argument naming the text on failure.
+/// Parses ISO 8601: "YYYY-MM-DD" (midnight), "YYYY-MM-DD hh:mm:ss[.fff]" or
+/// "YYYY-MM-DDThh:mm:ss[.fff]", each time optionally followed by "Z" or an offset from UTC
+/// ("+hh:mm", "-hh:mm", "+hhmm", "+hh"), which is subtracted (2026-11-15T01:00:00+01:00 is
+/// 2026-11-15 00:00:00 UTC); throws std::invalid_argument naming the text on failure.
 CalendarUtc parse_calendar_utc(const std::string& text);
 /// Formats as "YYYY-MM-DD hh:mm:ss.fffffffff".
 std::string format_calendar_utc(const CalendarUtc& c);
