@@ -23,12 +23,9 @@ std::string cdm_text_as_utf8(const std::string& text) {
   const std::size_t col0 = nl == std::string::npos ? pos : pos - nl - 1;
   long line = 1;
   for (std::size_t i = 0; i < pos; ++i) line += text[i] == '\n' ? 1 : 0;
-  char msg[160];
-  (void)std::snprintf(msg, sizeof msg,
-                      "CDM line %ld, column %zu: control character U+%04lX; expected printable "
-                      "text (UTF-8 or Latin-1)",
-                      line, col0 + 1, static_cast<unsigned long>(control));
-  throw CdmError(msg);
+  throw CdmError("CDM line " + std::to_string(line) + ", column " + std::to_string(col0 + 1) +
+                 ": control character " + sgp4::code_point_name(control) +
+                 "; expected printable text (UTF-8 or Latin-1)");
 }
 
 const CdmItem* CdmSection::find(const std::string& key) const {

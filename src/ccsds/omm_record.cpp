@@ -2,7 +2,6 @@
 // (OMM: metadata, mean Keplerian elements, TLE-related parameters, units of each keyword).
 #include "evade/ccsds/omm_record.hpp"
 
-#include <cstdio>
 #include <set>
 
 #include "evade/sgp4/catalog.hpp"
@@ -33,10 +32,9 @@ std::string text_value(const OmmRecord& rec, const std::string& key, const std::
   std::string out;
   long control = 0;
   if (title_to_utf8(trim(it->second.text), &out, &control) > 0) {
-    char cp[16];
-    (void)std::snprintf(cp, sizeof cp, "U+%04lX", static_cast<unsigned long>(control));
     throw ReadError(ReadIssue{source, it->second.line, it->second.column,
-                              key + " of printable characters (UTF-8 or Latin-1)", cp});
+                              key + " of printable characters (UTF-8 or Latin-1)",
+                              sgp4::code_point_name(control)});
   }
   return out;
 }

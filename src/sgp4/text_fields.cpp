@@ -2,6 +2,7 @@
 #include "evade/sgp4/text_fields.hpp"
 
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 
 namespace evade::sgp4 {
@@ -151,10 +152,6 @@ bool parse_iso_time(const std::string& time, double& seconds_of_day) {
   return true;
 }
 
-}  // namespace
-
-namespace {
-
 // The code point of the UTF-8 sequence at s[i] (advancing i), or -1 if it is not well-formed
 // UTF-8 (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF).
 long utf8_code_point(const std::string& s, std::size_t& i) {
@@ -199,7 +196,47 @@ int refuse(std::string* out, long* control, long cp, std::size_t at) {
   return static_cast<int>(at) + 1;
 }
 
+// Appends the code point cp (at most U+10FFFF) to out in UTF-8.
+void append_utf8(long cp, std::string* out) {
+  const auto byte = [&](long v) { out->push_back(static_cast<char>(v)); };
+  if (cp < 0x80) {
+    byte(cp);
+  } else if (cp < 0x800) {
+    byte(0xC0 | (cp >> 6));
+    byte(0x80 | (cp & 0x3F));
+  } else if (cp < 0x10000) {
+    byte(0xE0 | (cp >> 12));
+    byte(0x80 | ((cp >> 6) & 0x3F));
+    byte(0x80 | (cp & 0x3F));
+  } else {
+    byte(0xF0 | (cp >> 18));
+    byte(0x80 | ((cp >> 12) & 0x3F));
+    byte(0x80 | ((cp >> 6) & 0x3F));
+    byte(0x80 | (cp & 0x3F));
+  }
+}
+
 }  // namespace
+
+std::string code_point_name(long cp) {
+  char b[16];
+  (void)std::snprintf(b, sizeof b, "U+%04lX", static_cast<unsigned long>(cp));
+  return b;
+}
+
+std::string printable_utf8(const std::string& raw) {
+  const bool utf8 = valid_utf8(raw);
+  std::string out;
+  for (std::size_t i = 0; i < raw.size();) {
+    const long cp = utf8 ? utf8_code_point(raw, i) : static_cast<unsigned char>(raw[i++]);
+    if (is_control(cp, "")) {
+      out += "<" + code_point_name(cp) + ">";
+    } else {
+      append_utf8(cp, &out);
+    }
+  }
+  return out;
+}
 
 int text_to_utf8(const std::string& raw, std::string* out, long* control, const char* allowed) {
   out->clear();
@@ -216,12 +253,7 @@ int text_to_utf8(const std::string& raw, std::string* out, long* control, const 
   for (std::size_t i = 0; i < raw.size(); ++i) {  // Latin-1: the byte is the code point
     const auto b = static_cast<unsigned char>(raw[i]);
     if (is_control(b, allowed)) return refuse(out, control, b, i);
-    if (b < 0x80) {
-      out->push_back(static_cast<char>(b));
-    } else {
-      out->push_back(static_cast<char>(0xC0 | (b >> 6)));
-      out->push_back(static_cast<char>(0x80 | (b & 0x3F)));
-    }
+    append_utf8(b, out);
   }
   return 0;
 }

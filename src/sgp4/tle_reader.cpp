@@ -7,7 +7,6 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <vector>
@@ -245,10 +244,8 @@ Catalog read_tle(const std::string& text, const std::string& source, const TleRe
       long control = 0;
       const int bad_col = title_to_utf8(raw, &name, &control);
       if (bad_col > 0) {  // the column in the line, past a "0 " and the blanks trim removed
-        char cp[16];
-        (void)std::snprintf(cp, sizeof cp, "U+%04lX", static_cast<unsigned long>(control));
         reject(cat, {source, no, static_cast<int>(l.find(raw)) + bad_col,
-                     "a title of printable characters (UTF-8 or Latin-1)", cp});
+                     "a title of printable characters (UTF-8 or Latin-1)", code_point_name(control)});
       }
       name_line = no;
     }

@@ -4,7 +4,8 @@
 Names in Latin-1 (0xC9), with quotes, backslashes and non-ASCII UTF-8, as 3LE title lines, and a
 CDM whose MESSAGE_ID is Latin-1: every --json output of `evade propagate --tle`, `evade screen
 --tle` and `evade assess --cdm` must decode as strict UTF-8 and parse with a strict JSON parser,
-and the names must come back as the readers decoded them (Latin-1 read as Latin-1). A title
+and the names must come back as the readers decoded them (Latin-1 read as Latin-1), the issue a
+stray Latin-1 line raises included. A title
 with a control character is refused with its line and column, the element set read without it.
 
   hostile_names_test.py EVADE SOURCE_DIR
@@ -84,7 +85,8 @@ def main():
         b1 = ISS1B + checksum(ISS1B)
         b2 = ISS2B + checksum(ISS2B)
         tle.write_bytes(NAMES[0][0] + b"\n" + f"{ISS1}\n{ISS2}\n".encode() +
-                        NAMES[1][0] + b"\n" + f"{b1}\n{b2}\n".encode())
+                        NAMES[1][0] + b"\n" + f"{b1}\n{b2}\n".encode() +
+                        b"2 \xc9 a stray line 2 in Latin-1, reported as an issue\n")
         cases = {
             "propagate --json": ["propagate", "--tle", str(tle), "--span-s", "120", "--step-s", "60",
                                  "--json"],

@@ -104,5 +104,22 @@ TEST(TleReader, TitleWithAControlCharacterIsRefusedWithLineAndColumn) {
   EXPECT_EQ(title_to_utf8("A\x7F", &out), 2);
 }
 
+// Issue 46: an issue's found text is the file's own bytes; its message is printable UTF-8 (a
+// Latin-1 byte in a field made `evade propagate --tle --json` write invalid JSON with exit 0).
+TEST(TleReader, IssueMessagesArePrintableUtf8WhateverTheFileHeld) {
+  std::string l1 = kIss1;
+  l1[9] = '\xC9';  // a Latin-1 byte in the catalog number
+  const Catalog c = read_tle(l1 + "\n" + kIss2 + "\n2 \xC9\x07 stray\n", "l\xE9.tle");
+  ASSERT_EQ(c.bad_entries, 2);
+  EXPECT_EQ(c.issues[1].message(),
+            "l\xC3\xA9.tle:3:1: expected line 1 of an element set (starting '1 ') before line 2, "
+            "found '2 \xC3\x89<U+0007> stray'");
+  for (const ReadIssue& is : c.issues) {
+    std::string out;
+    EXPECT_EQ(title_to_utf8(is.message(), &out), 0) << "not printable UTF-8";
+  }
+  EXPECT_EQ(printable_utf8("A\xE2\x82\xAC\t"), "A\xE2\x82\xAC<U+0009>");  // UTF-8 kept
+}
+
 }  // namespace
 }  // namespace evade::sgp4

@@ -28,6 +28,13 @@ int title_to_utf8(const std::string& raw, std::string* out, long* control = null
 /// characters in `allowed` (e.g. "\t\r\n") let through. Returns 0 or the 1-based byte offset.
 int text_to_utf8(const std::string& raw, std::string* out, long* control, const char* allowed);
 
+/// "U+0007": a code point as error messages name it.
+std::string code_point_name(long cp);
+
+/// raw as text for a message (a file name, an expected or found field): decoded as
+/// title_to_utf8 decodes it, each control character written as "<U+XXXX>". Always valid UTF-8.
+std::string printable_utf8(const std::string& raw);
+
 /// An integer (optionally signed) surrounded by blanks only.
 bool parse_plain_integer(const std::string& field, long& out);
 
