@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 
 #include "evade/core/elements.hpp"
+#include "evade/core/erfc_inverse.hpp"
 
 namespace evade::assessment {
 namespace {
@@ -212,6 +214,21 @@ Encounter2dStatus assess_encounter_2d(const StateEci& s1, const Mat6& c1, const 
                             earth);
   e.failed = failed_bits(e, cfg);
   return Encounter2dStatus::kOk;
+}
+
+Encounter2dConfig encounter_2d_config(const AssessConfig& c) noexcept {
+  Encounter2dConfig f;
+  f.pc_rel_tol = c.pc_rel_tol;
+  f.short_term_max_period_fraction = c.short_term_max_period_fraction;
+  f.short_term_max_vel_sigma_ratio = c.short_term_max_vel_sigma_ratio;
+  // A gamma outside erfcinv's domain (the table refuses it) makes the bounds infinite: every
+  // extended and offset check fails, the conservative answer.
+  const double g = c.conj_duration_gamma;
+  f.conj_bound_factor = (g > 0.0 && g < 2.0) ? std::sqrt(2.0) * erfc_inverse(g)
+                                             : std::numeric_limits<double>::infinity();
+  f.pc2d_extended_cutoff = c.pc2d_extended_cutoff;
+  f.pc2d_offset_cutoff = c.pc2d_offset_cutoff;
+  return f;
 }
 
 }  // namespace evade::assessment

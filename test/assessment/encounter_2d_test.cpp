@@ -51,16 +51,7 @@ ConjunctionInput read(const std::string& path) {
   return commands::conjunction_from_cdm(ccsds::read_cdm_text(ss.str()), 20.0, kEarthDefault);
 }
 
-Encounter2dConfig flight_config(const AssessConfig& c) {
-  Encounter2dConfig f;
-  f.pc_rel_tol = c.pc_rel_tol;
-  f.short_term_max_period_fraction = c.short_term_max_period_fraction;
-  f.short_term_max_vel_sigma_ratio = c.short_term_max_vel_sigma_ratio;
-  f.conj_bound_factor = std::sqrt(2.0) * erfc_inverse(c.conj_duration_gamma);
-  f.pc2d_extended_cutoff = c.pc2d_extended_cutoff;
-  f.pc2d_offset_cutoff = c.pc2d_offset_cutoff;
-  return f;
-}
+Encounter2dConfig flight_config(const AssessConfig& c) { return encounter_2d_config(c); }
 
 // The onboard assessment of in against evade assess's (tca_search_s = 0): the same Pc and
 // usage figures bit for bit, the same failed checks and short-term verdict. Prints a row;

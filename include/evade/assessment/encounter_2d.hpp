@@ -19,6 +19,7 @@
 #include <array>
 #include <cstdint>
 
+#include "evade/assessment/assess_params.hpp"
 #include "evade/assessment/encounter_plane.hpp"
 #include "evade/assessment/pc_2d.hpp"
 #include "evade/core/constants.hpp"
@@ -111,6 +112,10 @@ struct Encounter2d {
   Usage2dValues usage;
   std::uint16_t failed = 0;  ///< Usage2dBit of the checks that fail
 };
+
+/// The 2D settings of an assessment configuration (the one declaration of each, assess_params):
+/// what the node and evade assess both use. Computes erfcinv once: call it at initialization.
+Encounter2dConfig encounter_2d_config(const AssessConfig& c) noexcept;
 
 /// Steps 1 to 5 for two objects at TCA with 6x6 covariances.
 Encounter2dStatus assess_encounter_2d(const StateEci& s1, const Mat6& c1, const StateEci& s2,
