@@ -3,6 +3,7 @@
 #include "evade/autonomy/onboard_cam.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -176,23 +177,12 @@ const char* cam_status_name(CamStatus s) noexcept {
   return "unknown";
 }
 
-namespace {
-
-bool counts_ok(const OnboardCamOptions& o) noexcept {
-  auto in = [](int v, int lo, int hi) { return v >= lo && v <= hi; };
-  return in(o.burn_times, 1, 64) && in(o.boundary_angles, 8, 720) && in(o.bisections, 10, 100) &&
-         in(o.golden_iterations, 0, 100) && in(o.relinearizations, 1, 20) && in(o.target_corrections, 0, 10);
+bool cam_options_ok(const OnboardCamOptions& o) noexcept {
+  for (const Param<OnboardCamOptions>& p : cam_options_params()) {
+    if (!param_value_ok(p.spec, p.get(o))) return false;
+  }
+  return true;
 }
-
-bool values_ok(const OnboardCamOptions& o) noexcept {
-  auto pos = [](double v) { return v > 0.0 && std::isfinite(v); };
-  return pos(o.step_s) && o.step_s <= 60.0 && pos(o.max_dv_mps) && o.pc_margin >= 0.0 && o.pc_margin < 1.0 &&
-         pos(o.dv_tol_mps) && o.min_lead_s >= 0.0 && std::isfinite(o.min_lead_s) && pos(o.pc_rel_tol);
-}
-
-}  // namespace
-
-bool cam_options_ok(const OnboardCamOptions& o) noexcept { return counts_ok(o) && values_ok(o); }
 
 CamStatus burn_outcome(const ConjunctionEvent& e, double burn_from_tca_s, const Vec3& dv_eci_mps,
                        const OnboardCamOptions& o, const EarthModel& earth, CamWorkspace* ws,
@@ -233,20 +223,30 @@ CamStatus plan_burn_at(const ConjunctionEvent& e, double burn_from_tca_s, const 
   return out->status;
 }
 
+int candidate_burn_times(const ConjunctionEvent& e, std::int64_t now_us, const OnboardCamOptions& o,
+                         double* taus_s) noexcept {
+  if (!cam_options_ok(o)) return 0;
+  const double earliest_us = static_cast<double>(now_us) + 1e6 * o.min_lead_s;
+  const double t0 = 1e-6 * (std::max(static_cast<double>(e.burn_start_us), earliest_us) - static_cast<double>(e.tca_us));
+  const double t1 = 1e-6 * static_cast<double>(e.burn_end_us - e.tca_us);
+  if (!(t0 <= t1) || !(t1 < 0.0)) return 0;
+  const int n = (t1 > t0) ? o.burn_times : 1;
+  for (int k = 0; k < n; ++k)
+    taus_s[k] = n == 1 ? t1 : t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(n - 1);
+  return n;
+}
+
 CamStatus plan_burn(const ConjunctionEvent& e, std::int64_t now_us, const OnboardCamOptions& o,
                     const EarthModel& earth, CamWorkspace* ws, CamProposal* out) noexcept {
   *out = CamProposal{};
   if (!cam_options_ok(o)) return out->status = CamStatus::kBadOptions;
-  const double earliest_us = static_cast<double>(now_us) + 1e6 * o.min_lead_s;
-  const double t0 = 1e-6 * (std::max(static_cast<double>(e.burn_start_us), earliest_us) - static_cast<double>(e.tca_us));
-  const double t1 = 1e-6 * static_cast<double>(e.burn_end_us - e.tca_us);
-  if (!(t0 <= t1) || !(t1 < 0.0)) return out->status = CamStatus::kNoBurnTime;
-  const int n = (t1 > t0) ? o.burn_times : 1;
+  std::array<double, OnboardCamOptions::kMaxBurnTimes> taus{};
+  const int n = candidate_burn_times(e, now_us, o, taus.data());
+  if (n == 0) return out->status = CamStatus::kNoBurnTime;
   CamStatus last = CamStatus::kUnreachable;
   for (int k = 0; k < n; ++k) {
-    const double tau = n == 1 ? t1 : t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(n - 1);
     CamProposal p;
-    last = plan_burn_at(e, tau, o, earth, ws, &p);
+    last = plan_burn_at(e, taus[static_cast<std::size_t>(k)], o, earth, ws, &p);
     if (last == CamStatus::kNotNeeded) {
       *out = std::move(p);
       return out->status;

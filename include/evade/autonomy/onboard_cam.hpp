@@ -34,17 +34,20 @@
 #include "evade/assessment/pc_2d.hpp"
 #include "evade/autonomy/conjunction_event.hpp"
 #include "evade/core/constants.hpp"
+#include "evade/core/param.hpp"
 #include "evade/core/state.hpp"
 
 namespace evade::autonomy {
 
 struct OnboardCamOptions {
-  int burn_times = 8;            ///< candidate burn times over the window [1, 64]
-  int boundary_angles = 72;      ///< directions of the boundary sweep [8, 720]
-  int bisections = 40;           ///< root steps of the boundary radius along a direction [10, 100]
-  int golden_iterations = 25;    ///< refinement of each local minimum of the sweep [0, 100]
-  int relinearizations = 6;      ///< models about the burned trajectory [1, 20]
-  int target_corrections = 3;    ///< lowered aims after the exact outcome [0, 10]
+  static constexpr int kMaxBurnTimes = 64;
+  // Ranges and meanings: cam_options_params() (onboard_cam_params.cpp).
+  int burn_times = 8;            ///< candidate burn times over the window
+  int boundary_angles = 72;      ///< directions of the boundary sweep
+  int bisections = 40;           ///< root steps of the boundary radius along a direction
+  int golden_iterations = 25;    ///< refinement of each local minimum of the sweep
+  int relinearizations = 6;      ///< models about the burned trajectory
+  int target_corrections = 3;    ///< lowered aims after the exact outcome
   double step_s = 5.0;           ///< RK4 step of every propagation [s]
   double max_dv_mps = 1.0;       ///< largest burn [m/s]
   double pc_margin = 1e-3;       ///< the aim is pc_target (1 - margin) [-]
@@ -90,7 +93,9 @@ struct CamWorkspace {
   assessment::Pc2dWorkspace pc;
 };
 
-/// The range check of the options.
+/// The options' parameter table (onboard_cam_params.cpp): each field's unit, range, meaning.
+ParamTable<OnboardCamOptions> cam_options_params() noexcept;
+/// The range check of the options, by that table.
 bool cam_options_ok(const OnboardCamOptions& o) noexcept;
 
 /// Step 1: the exact outcome of burn dv_eci at burn_from_tca_s (< 0) for event e.
@@ -101,6 +106,12 @@ CamStatus burn_outcome(const ConjunctionEvent& e, double burn_from_tca_s, const 
 /// Steps 2 and 3 at one burn time.
 CamStatus plan_burn_at(const ConjunctionEvent& e, double burn_from_tca_s, const OnboardCamOptions& o,
                        const EarthModel& earth, CamWorkspace* ws, CamProposal* out) noexcept;
+
+/// The candidate burn times (see the file comment) as offsets from TCA [s, < 0] into taus_s
+/// (room for OnboardCamOptions::kMaxBurnTimes); returns how many, 0 when the window has none
+/// (or the options are out of range).
+int candidate_burn_times(const ConjunctionEvent& e, std::int64_t now_us, const OnboardCamOptions& o,
+                         double* taus_s) noexcept;
 
 /// The smallest verified burn over the window's candidate times (see the file comment).
 CamStatus plan_burn(const ConjunctionEvent& e, std::int64_t now_us, const OnboardCamOptions& o,
