@@ -6,56 +6,24 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <cstdlib>
-#include <new>
+#include <string>
 
+#include "autonomy/cam_example_event.hpp"
 #include "evade/autonomy/orbit_stm.hpp"
 #include "evade/autonomy/response.hpp"
-
-namespace {
-
-long g_news = 0;  // operator new calls while counting (this executable's one replacement)
-bool g_count = false;
-
-}  // namespace
-
-void* operator new(std::size_t n) {
-  if (g_count) ++g_news;
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/counting_new.hpp"
 
 namespace evade::autonomy {
 namespace {
 
-constexpr std::int64_t kNow = 1'000'000'000'000;
-constexpr double kLeadS = 9000.0;  // about 1.5 orbits of the 700 km primary
+using test_example::kNow;
 
-Mat6 diag_cov(double r, double t, double n) {
-  Mat6 c = Mat6::Zero();
-  c.diagonal() << r * r, t * t, n * n, 1e-4, 1e-4, 1e-4;
-  return c;
-}
-
-// onboard_cam_test.cpp's event (scenarios/cam-example.yaml at TCA), TCA 4 lead times ahead,
-// the window 1.2 to 0.8 lead times before TCA, the veto deadline 1.3 lead times before it.
+// The shared example with a post-burn target of 1e-5 (a tenth of the red threshold) and the
+// veto deadline 1.3 lead times before TCA, before the window opens.
 ConjunctionEvent example_event(std::int64_t id = 7) {
-  ConjunctionEvent e;
-  e.event_id = id;
-  e.version = 1;
-  e.tca_us = kNow + static_cast<std::int64_t>(4.0 * kLeadS * 1e6);
-  e.x1_eci << 7078137.0, 0.0, 0.0, 0.0, -1070.3284, 7427.5644;
-  e.x2_eci << 7078177.0, -11.293, -119.467, 0.0, 2443.1567, 7095.4423;
-  e.cov1_eci = diag_cov(30.0, 150.0, 20.0);
-  e.cov2_eci = diag_cov(80.0, 600.0, 60.0);
-  e.hbr_m = 15.0;
-  e.pc_red = 1e-4;
+  ConjunctionEvent e = test_example::example_event(id);
   e.pc_target = 1e-5;
-  e.burn_start_us = e.tca_us - static_cast<std::int64_t>(1.2 * kLeadS * 1e6);
-  e.burn_end_us = e.tca_us - static_cast<std::int64_t>(0.8 * kLeadS * 1e6);
-  e.veto_deadline_us = e.tca_us - static_cast<std::int64_t>(1.3 * kLeadS * 1e6);
+  e.veto_deadline_us = e.tca_us - static_cast<std::int64_t>(1.3 * test_example::kLeadS * 1e6);
   return e;
 }
 
@@ -171,12 +139,11 @@ TEST(Response, TheWholeAssessmentAllocatesNothing) {
   job.others[0].pc_red = 1.0;
   job.n_others = 1;
   Assessment a;
-  g_news = 0;
-  g_count = true;
+  const long before = g_news.load();
   assess_event(job, cfg, kEarthDefault, &g_ws, &a);
-  g_count = false;
+  const long news = g_news.load() - before;
   EXPECT_EQ(a.state, ResponseState::kProposed) << response_reason_name(a.reason);
-  EXPECT_EQ(g_news, 0);
+  EXPECT_EQ(news, 0);
 }
 
 TEST(Response, PolicyNamesReadBackAndOthersAreRefused) {
