@@ -7,10 +7,7 @@
 namespace evade::guidance_lcm {
 
 std::string NodeConfig::validate() const {
-  std::string err = validate_params(node_params(), *this, "node.");
-  if (err.empty()) err = autonomy::validate_responder_config(response);
-  if (err.empty() && static_cast<int>(autonomy) > static_cast<int>(autonomy::Policy::kApprove))
-    err = "node autonomy policy: not off, veto or approve";
+  const std::string err = validate_params(node_params(), *this, "node.");
   return err.empty() ? guidance.validate() : err;
 }
 
