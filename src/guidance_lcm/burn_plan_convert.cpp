@@ -91,12 +91,12 @@ void check_source(const BurnPlan& p) {
     bad("observability.evaluations", "= " + std::to_string(o.evaluations) + ": must be >= 0");
 }
 
-struct Verdict {
+struct PlanVerdict {
   PlanReject reject;
   const char* why;
 };
 
-Verdict impulses_verdict(const evade_burn_plan_t& m) noexcept {
+PlanVerdict impulses_verdict(const evade_burn_plan_t& m) noexcept {
   if (m.n_impulses < 1 || m.n_impulses > kMax)
     return {PlanReject::kImpulseCount, "evade_burn_plan_t.n_impulses: must be in [1, 8]"};
   for (int k = 0; k < m.n_impulses; ++k) {
@@ -119,7 +119,7 @@ Verdict impulses_verdict(const evade_burn_plan_t& m) noexcept {
   return {PlanReject::kNone, nullptr};
 }
 
-Verdict source_verdict(const evade_burn_plan_t& m) noexcept {
+PlanVerdict source_verdict(const evade_burn_plan_t& m) noexcept {
   if (!known_source(m.source))
     return {PlanReject::kMalformed,
             "evade_burn_plan_t.source: unknown planner code (allowed 0, 1, 3, 4, 5)"};
@@ -136,8 +136,8 @@ Verdict source_verdict(const evade_burn_plan_t& m) noexcept {
   return {PlanReject::kNone, nullptr};
 }
 
-Verdict message_verdict(const evade_burn_plan_t& m) noexcept {
-  const Verdict v = impulses_verdict(m);
+PlanVerdict message_verdict(const evade_burn_plan_t& m) noexcept {
+  const PlanVerdict v = impulses_verdict(m);
   return v.reject != PlanReject::kNone ? v : source_verdict(m);
 }
 
