@@ -26,6 +26,7 @@
 #include "evade/guidance_lcm/lcm_url.hpp"
 #include "node_loop.hpp"
 #include "node_options.hpp"
+#include "planning_worker.hpp"
 
 namespace {
 
@@ -242,6 +243,7 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
   warn_about_auth(cfg, sec);
   guidance_lcm::GuidanceNode nodecore(in.get(), cfg, out.get(), sec);
   install_signal_handlers();
+  node::PlanningWorker worker(nodecore);  // before SCHED_FIFO: the worker stays below the cycle
   // try_realtime says on stderr what was refused; the node runs on without it, by design.
   if (opts.realtime) (void)node::try_realtime(opts.rt_priority);
   if (!opts.quiet) print_banner(opts, cfg);

@@ -79,6 +79,12 @@ void add_options(CLI::App& app, NodeOptions& o) {
                  "lockstep: exit after this long without a tick [s] (0 = never)")
       ->check(CLI::Range(0.0, 86400.0));
   app.add_flag("--start-disarmed", o.start_disarmed, "start disarmed (evade_arm_t arms)");
+  app.add_option("--autonomy", o.autonomy,
+                 "off|veto|approve: the onboard conjunction response's policy at start (off: "
+                 "assess and report only; veto: burn at the proposed time unless the ground "
+                 "vetoes before the deadline; approve: burn only when approved; the ground's "
+                 "evade_cam_decision_t changes it; docs/AUTONOMY.md) (default veto)")
+      ->check(CLI::IsMember({"off", "veto", "approve"}));
   app.add_flag("--stats-json", o.stats_json, "print run statistics as JSON on stdout at exit");
   app.add_flag("--quiet", o.quiet, "no progress messages on stderr");
   add_auth_options(app, o);
@@ -90,6 +96,8 @@ namespace {
 void read_node_params(const config::Scenario& sc, guidance_lcm::NodeConfig* c) {
   config::read_params(sc, "guidance.", guidance::guidance_params(), &c->guidance);
   config::read_params(sc, "node.", guidance_lcm::node_params(), c);
+  config::read_params(sc, "node.autonomy.", autonomy::responder_params(), &c->response);
+  config::read_params(sc, "node.autonomy.cam.", autonomy::cam_options_params(), &c->response.cam);
 }
 
 // The parameter flags given, read through their keys' tables (already checked at parse).
@@ -125,6 +133,7 @@ guidance_lcm::NodeConfig make_node_config(const NodeOptions& o) {
     c.auth.nav_required = c.auth.angles_required = c.auth.clock_required = on;
   }
   if (o.start_disarmed) c.guidance.armed = false;
+  if (!o.autonomy.empty()) (void)autonomy::parse_policy(o.autonomy.c_str(), &c.autonomy);  // checked at parse
   c.lockstep = o.lockstep;
   const std::string err = c.validate();
   if (!err.empty()) throw std::invalid_argument(err);

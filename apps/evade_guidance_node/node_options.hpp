@@ -28,6 +28,7 @@ struct NodeOptions {
   std::int64_t max_cycles = 0;    ///< stop after N cycles (0 = run until signalled)
   double idle_exit_s = 0.0;       ///< lockstep: exit 0 after this long without a tick (0 = never)
   bool start_disarmed = false;    ///< start disarmed (guidance.armed = false)
+  std::string autonomy;           ///< --autonomy off|veto|approve ("" = NodeConfig's default, veto)
   bool stats_json = false;        ///< print the run's statistics as JSON on stdout at exit
   bool quiet = false;             ///< no progress on stderr
   std::vector<std::string> key_files;  ///< --keys (repeatable): docs/SECURITY.md KEY-1

@@ -102,6 +102,7 @@ const char* plan_end_name(PlanEnd e) noexcept {
     case PlanEnd::kAbandonedSafe: return "ABANDONED_SAFE";
     case PlanEnd::kMissedStart: return "MISSED_START";
     case PlanEnd::kSuperseded: return "SUPERSEDED";
+    case PlanEnd::kCancelledOnboard: return "CANCELLED_ONBOARD";
   }
   return "UNKNOWN";
 }

@@ -55,5 +55,12 @@ std::int64_t GuidanceNode::auth_persist_failures() const noexcept {
 }
 std::int64_t GuidanceNode::acks_published() const noexcept { return core_->acks_published(); }
 std::int64_t GuidanceNode::acks_unsent() const noexcept { return core_->acks_unsent(); }
+const autonomy::Responder& GuidanceNode::responder() const noexcept { return core_->responder(); }
+bool GuidanceNode::plan_once() noexcept { return core_->plan_once(); }
+bool GuidanceNode::planning_busy() const noexcept { return core_->planning_busy(); }
+double GuidanceNode::last_planning_us() const noexcept { return core_->last_planning_us(); }
+std::int64_t GuidanceNode::proposals_published() const noexcept {
+  return core_->proposals_published();
+}
 
 }  // namespace evade::guidance_lcm

@@ -56,6 +56,8 @@ bool NodeCore::decode_command(CommandInbox::Slot& s) noexcept {
   switch (s.input) {
     case Input::kPlan: return decode_exact(s, &plan_msg_);
     case Input::kArm: return decode_exact(s, &arm_msg_);
+    case Input::kConjunction: return decode_exact(s, &conj_msg_);
+    case Input::kCamDecision: return decode_exact(s, &decision_msg_);
     default: return decode_exact(s, &key_msg_);  // the inbox holds only command rows
   }
 }
@@ -71,9 +73,13 @@ void NodeCore::admit_command(CommandInbox::Slot& s, std::int64_t now_us) noexcep
   }
   // A plan's burn times are absolute in the node's time base: a plan stamped in the node's
   // future comes from a ground clock that is ahead, and its times would be wrong (refused, the
-  // ARSN not advanced). Arm, disarm and key commands carry no such times: they are ordered by
-  // their ARSN alone, so a ground with a wrong clock can still disarm (issue 40, row 9).
-  if (s.input == Input::kPlan && plan_msg_.utime > now_us + future_us_) {
+  // ARSN not advanced); so are a conjunction's (TCA, burn window, veto deadline). Arm, disarm,
+  // key commands and the ground's decisions carry no such times: they are ordered by their ARSN
+  // alone, so a ground with a wrong clock can still disarm or veto (issue 40, row 9).
+  const std::int64_t stamped = s.input == Input::kPlan          ? plan_msg_.utime
+                               : s.input == Input::kConjunction ? conj_msg_.utime
+                                                                : now_us;
+  if (stamped > now_us + future_us_) {
     refuse(s, Verdict::kRejected, Reason::kFromFuture, 0, now_us);
     return;
   }
@@ -119,6 +125,8 @@ void NodeCore::execute_command(CommandInbox::Slot& s, std::int64_t now_us) noexc
   switch (s.input) {
     case Input::kPlan: execute_plan(s, now_us); break;
     case Input::kArm: execute_arm(s, now_us); break;
+    case Input::kConjunction: execute_conjunction(s, now_us); break;
+    case Input::kCamDecision: execute_decision(s, now_us); break;
     default: execute_key_cmd(s, now_us); break;
   }
   s.stage = Stage::kDone;

@@ -7,7 +7,10 @@
 namespace evade::guidance_lcm {
 
 std::string NodeConfig::validate() const {
-  const std::string err = validate_params(node_params(), *this, "node.");
+  std::string err = validate_params(node_params(), *this, "node.");
+  if (err.empty()) err = autonomy::validate_responder_config(response);
+  if (err.empty() && static_cast<int>(autonomy) > static_cast<int>(autonomy::Policy::kApprove))
+    err = "node autonomy policy: not off, veto or approve";
   return err.empty() ? guidance.validate() : err;
 }
 

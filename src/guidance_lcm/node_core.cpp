@@ -7,6 +7,7 @@
 
 #include <time.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -47,15 +48,20 @@ NodeCore::NodeCore(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, const Node
       refill_window_us_(static_cast<std::int64_t>(std::llround(1e6 / cfg.guidance.rate_hz))),
       drain_us_(static_cast<std::int64_t>(std::llround(cfg.max_drain_s * 1e6))),
       queue_(static_cast<std::size_t>(cfg.queue_capacity)),
-      seq_{tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg)},
+      seq_{tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg), tracker(cfg),
+           tracker(cfg), tracker(cfg)},
       armed_(cfg.guidance.armed),
       plan_exec_(guidance::PlanExecutorConfig::from(cfg.guidance)),
+      responder_(cfg_.autonomy),
+      planner_(cfg_.response),
+      proposal_period_cycles_(std::max<std::int64_t>(1, std::llround(cfg_.guidance.rate_hz))),
       keys_(sec.keys),
       auth_required_mask_(auth_required_mask(cfg_.auth)),
       budget_(cfg_.auth),
       cmd_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmd),
       status_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanStatus),
-      ack_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmdAck) {
+      ack_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCmdAck),
+      proposal_pub_(out_lcm != nullptr ? out_lcm : lcm, kChanCamProposal) {
   if (lcm_ == nullptr) throw std::invalid_argument("GuidanceNode: lcm is null");
   state_file_ = start_auth_state(sec, &keys_);  // initialization: may throw, naming the file
   keys_.raise_sensor_floor(sec.sensor_arsn_floor_us);
@@ -66,6 +72,7 @@ NodeCore::NodeCore(lcm_t* lcm, const NodeConfig& cfg, lcm_t* out_lcm, const Node
     k.key = tm->key;
     status_pub_.set_signing_key(k);
     ack_pub_.set_signing_key(k);
+    proposal_pub_.set_signing_key(k);
   }
   for (const InputRow& row : kInputRows) {
     if (row.kind == InputKind::kTick && !cfg_.lockstep) continue;  // ticks only in lockstep
@@ -143,6 +150,7 @@ const evade_thrust_cmd_t& NodeCore::run_cycle(std::int64_t now_us) noexcept {
   last_cycle_us_ = now_us;
   process_queue(now_us);
   process_commands(now_us);
+  step_autonomy(now_us);  // the responder's one action of this cycle, before the executor steps
   input_.armed = armed_;
   // Watchdog (NODE-WD-1): the newest valid measurement received is older than the stale
   // limit. Its verdict is an input of the law, which then commands SAFE and counts it.
@@ -157,6 +165,7 @@ const evade_thrust_cmd_t& NodeCore::run_cycle(std::int64_t now_us) noexcept {
   if (cmd_pub_.publish(cmd_msg_) != 0) ++publish_failures_;
   ++cycles_;
   publish_acks();
+  publish_proposals(now_us);
   if (cycles_ % cfg_.status_divider == 0) fill_status(now_us);
   budget_.refill();  // the next drain's budgets
   budget_.mark_refilled(monotonic_us());

@@ -19,7 +19,9 @@ static_assert(static_cast<int>(auth::KeyState::kActive) == Ack::KEY_STATE_ACTIVE
 static_assert(static_cast<int>(Reason::kReplayedArsn) == Ack::REASON_REPLAYED_ARSN &&
                   static_cast<int>(Reason::kNotPersisted) == Ack::REASON_NOT_PERSISTED &&
                   static_cast<int>(Reason::kStopped) == Ack::REASON_STOPPED &&
-                  static_cast<int>(Reason::kFromFuture) == Ack::REASON_FROM_FUTURE,
+                  static_cast<int>(Reason::kFromFuture) == Ack::REASON_FROM_FUTURE &&
+                  static_cast<int>(Reason::kTableFull) == Ack::REASON_TABLE_FULL &&
+                  static_cast<int>(Reason::kNotApplicable) == Ack::REASON_NOT_APPLICABLE,
               "Reason values are the acknowledgement's REASON_* codes");
 static_assert(static_cast<int>(auth::KeyRole::kTelemetry) ==
                   evade_guidance_status_t::KEY_ROLE_TELEMETRY,

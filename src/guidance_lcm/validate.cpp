@@ -81,7 +81,8 @@ constexpr const char* kReasonNames[] = {
     "out_of_order_seq", "seq_jump",    "unsigned",       "unknown_key",
     "bad_mac",      "standby_key",     "retired_key",    "wrong_key_role",
     "too_short_for_trailer", "replayed_arsn", "verify_budget", "not_persisted",
-    "queue_full",   "inbox_full",      "stopped"};
+    "queue_full",   "inbox_full",      "stopped",        "table_full",
+    "not_applicable"};
 static_assert(sizeof(kReasonNames) / sizeof(kReasonNames[0]) ==
                   static_cast<std::size_t>(Reason::kCount),
               "one name per Reason");

@@ -18,7 +18,7 @@
 #include <string>
 
 #include "evade/evade_burn_plan_t.hpp"
-#include "node_harness.hpp"
+#include "conjunction_harness.hpp"
 
 namespace {
 std::atomic<long> g_news{0};
@@ -177,6 +177,47 @@ TEST(NodeAllocation, AuthenticatedCyclesAndTheStateWriteAllocateNothing) {
   EXPECT_GT(rig.node.counts().replayed, 0);
   (void)std::remove(state.c_str());
   (void)rmdir(dir_tmpl);
+}
+
+// NODE-RT-1 with the onboard conjunction response (docs/AUTONOMY.md AUT-8): a signed
+// conjunction received, its assessment run by the worker (this thread, in its place) and
+// collected, the proposal signed and published every cycle it changes and once a second, a
+// newer version superseding it and re-planned, the burn loaded at the veto deadline and flown:
+// no allocation in the cycle nor in the worker's assessment.
+TEST(NodeAllocation, PlanningAConjunctionAndFlyingItsBurnAllocateNothing) {
+  NodeConfig cfg;
+  Rig rig(cfg, 1000);
+  OrbitNav nav(node_event());
+  std::int64_t seq = 0;
+  auto step = [&](std::int64_t t) {
+    rig.pub.send(kChanNav, nav.at(t, ++seq));
+    return rig.cycle(t).accel_mps2 > 0.0 ? 1 : 0;
+  };
+  for (int k = 0; k < 20; ++k) step(kT0 - (20 - k) * kPeriodUs);  // warm-up
+  g_news = 0;
+  g_counting = true;
+  rig.pub.send(kChanConjunction, conjunction_msg(node_event(7, 1), 1));
+  step(kT0);
+  const bool ran1 = rig.node.plan_once();
+  rig.pub.send(kChanConjunction, conjunction_msg(node_event(7, 2), 2));
+  step(kT0 + kPeriodUs);  // the first result collected stale, the new version handed out
+  const bool ran2 = rig.node.plan_once();
+  int thrust = 0;
+  for (int k = 2; k < 100; ++k) thrust += step(kT0 + k * kPeriodUs);
+  const autonomy::ResponseRecord& r = rig.node.responder().record(0);
+  const std::int64_t burn_us = r.assessment.burn_us;
+  const std::int64_t deadline = r.veto_deadline_us;
+  for (int k = -2; k < 3; ++k) thrust += step(deadline + k * kPeriodUs);
+  for (std::int64_t t = burn_us - 2'000'000; t < burn_us + 2'000'000; t += kPeriodUs) thrust += step(t);
+  g_counting = false;
+  EXPECT_EQ(g_news.load(), 0) << "operator new called while planning or flying the burn";
+  EXPECT_TRUE(ran1 && ran2);
+  EXPECT_EQ(rig.node.responder().counters().stale_results, 1);
+  EXPECT_EQ(rig.node.responder().counters().schedules, 1);
+  EXPECT_GT(thrust, 0);
+  EXPECT_EQ(r.state, autonomy::ResponseState::kExecuted);
+  EXPECT_GT(rig.node.proposals_published(), 100 / 50);
+  EXPECT_EQ(rig.node.counts().accounted(), rig.pub.published());
 }
 
 }  // namespace

@@ -98,7 +98,8 @@ struct HasAuth<T, std::void_t<decltype(std::declval<T&>().auth)>> : std::true_ty
 
 inline bool is_command_channel(const char* channel) {
   return std::strcmp(channel, kChanPlan) == 0 || std::strcmp(channel, kChanArm) == 0 ||
-         std::strcmp(channel, kChanKeyCmd) == 0;
+         std::strcmp(channel, kChanKeyCmd) == 0 || std::strcmp(channel, kChanConjunction) == 0 ||
+         std::strcmp(channel, kChanCamDecision) == 0;
 }
 
 /// Publishes on a channel (encode into a fixed buffer: no allocation). Signs every message

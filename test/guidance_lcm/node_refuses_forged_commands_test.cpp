@@ -36,7 +36,8 @@ TEST(NodeAuth, SignedPlanFliesAndIsAcknowledged) {
   EXPECT_EQ(s.plan_ack_id, 7);
   EXPECT_EQ(s.plan_ack_result, S::PLAN_REJECT_NONE);
   EXPECT_EQ(s.auth_last_key_id, 1);
-  EXPECT_EQ(s.auth_required, S::AUTH_PLAN | S::AUTH_ARM | S::AUTH_KEY_CMD);
+  EXPECT_EQ(s.auth_required, S::AUTH_PLAN | S::AUTH_ARM | S::AUTH_KEY_CMD | S::AUTH_CONJUNCTION |
+                                S::AUTH_CAM_DECISION);
   EXPECT_EQ(s.n_auth_failed, 0);
   expect_accounted(rig);
 }

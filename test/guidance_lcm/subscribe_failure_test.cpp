@@ -164,6 +164,8 @@ TEST_F(NodeSubscriptions, NodeSubscribesItsChannelsAndUnsubscribesAllWhenDestroy
       expected.emplace_back(kChanPlan);
       expected.emplace_back(kChanArm);
       expected.emplace_back(kChanKeyCmd);
+      expected.emplace_back(kChanConjunction);
+      expected.emplace_back(kChanCamDecision);
       EXPECT_EQ(g_subscribed_channels, expected);
       EXPECT_EQ(g_live.size(), expected.size());
     }

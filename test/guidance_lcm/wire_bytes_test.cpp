@@ -206,7 +206,7 @@ Wire guidance_status() {
   g.fill(m.plan_burn_start_utime, &Gen::i64); g.fill(m.plan_burn_end_utime, &Gen::i64);
   m.plan_dv_total_mps = g.d(); m.plan_n_accepted = g.i64(); m.plan_last_reject = g.i8();
   g.fill(m.plan_n_rejected, &Gen::i64); m.n_auth_failed = g.i64(); m.n_replayed = g.i64();
-  m.plan_ack_id = g.i64(); m.plan_ack_result = g.i8(); m.auth_required = g.i8();
+  m.plan_ack_id = g.i64(); m.plan_ack_result = g.i8(); m.auth_required = g.i16();
   m.auth_active_command_keys = g.i8(); m.auth_last_key_id = g.i32();
   m.auth_state_persist_failures = g.i64(); m.key_cmd_last_seq = g.i64();
   m.key_cmd_last_result = g.i8(); m.auth_n_keys = g.i8(); g.fill(m.auth_key_id, &Gen::i32);
@@ -262,7 +262,7 @@ const Golden kGolden[] = {
     {"evade_cam_proposal_t", &cam_proposal, 215, "df4862e0e81f3c7523c38144"},
     {"evade_cmd_ack_t", &cmd_ack, 136, "7c0c953d971015f8213e2a8f"},
     {"evade_conjunction_t", &conjunction, 808, "247b615d6f185aa878a77862"},
-    {"evade_guidance_status_t", &guidance_status, 808, "e8fb82600d01bd0025db0fad"},
+    {"evade_guidance_status_t", &guidance_status, 809, "159920bbb5e066588c892142"},
     {"evade_key_cmd_t", &key_cmd, 73, "719329aff06c3747ac3d4481"},
     {"evade_nav_state_t", &nav_state, 117, "79609a04b231bb9d84091bfd"},
     {"evade_sim_clock_t", &sim_clock, 68, "11b32e9f1fa90c8b52c95f00"},

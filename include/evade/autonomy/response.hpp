@@ -66,7 +66,8 @@ struct ResponderConfig {
   double nav_mismatch_sigma = 5.0;  ///< refuse an event whose own state is further from nav [-]
   double decision_lead_s = 60.0;    ///< no burn sooner than this after the veto deadline [s]
   OnboardCamOptions cam;            ///< the burn search (its step is the nav check's too)
-  assessment::Encounter2dConfig encounter;  ///< from the assessment.* table (encounter_2d_config)
+  /// From the assessment.* table (encounter_2d_config); its defaults unless set.
+  assessment::Encounter2dConfig encounter = assessment::encounter_2d_config(assessment::AssessConfig{});
 };
 
 ParamTable<ResponderConfig> responder_params() noexcept;

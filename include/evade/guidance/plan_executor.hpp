@@ -69,6 +69,7 @@ enum class PlanEnd : std::uint8_t {
   kAbandonedSafe = 4,    ///< the law went SAFE during a burn
   kMissedStart = 5,      ///< a burn's start cycle passed without the burn starting
   kSuperseded = 6,       ///< a newer plan was accepted
+  kCancelledOnboard = 7, ///< the onboard conjunction response withdrew its own burn (docs/AUTONOMY.md)
 };
 
 const char* plan_reject_name(PlanReject r) noexcept;

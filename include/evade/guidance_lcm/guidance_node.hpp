@@ -13,6 +13,7 @@
 #include <lcm/lcm.h>
 
 #include "evade/auth/keyring.hpp"
+#include "evade/autonomy/responder.hpp"
 #include "evade/evade_cmd_ack_t.hpp"
 #include "evade/evade_guidance_status_t.hpp"
 #include "evade/evade_thrust_cmd_t.hpp"
@@ -92,6 +93,20 @@ class GuidanceNode {
   std::int64_t auth_persist_failures() const noexcept;
   std::int64_t acks_published() const noexcept;
   std::int64_t acks_unsent() const noexcept;
+
+  /// The onboard conjunction response (docs/AUTONOMY.md): its events, records and counters.
+  const autonomy::Responder& responder() const noexcept;
+  /// The planning worker's step (AUT-8): runs the job the cycle handed out, if any (the
+  /// assessment of one event, milliseconds), and returns true when it ran one. Call it from one
+  /// thread beside the cycle's (the node loop's worker), never from inside run_cycle; the cycle
+  /// collects the result in a later cycle without waiting.
+  bool plan_once() noexcept;
+  /// A job is waiting for plan_once or running in it.
+  bool planning_busy() const noexcept;
+  /// The worker's compute time of the last job collected [us].
+  double last_planning_us() const noexcept;
+  /// Proposals published (evade_cam_proposal_t on EVADE_CAM_PROPOSAL).
+  std::int64_t proposals_published() const noexcept;
 
  private:
   std::unique_ptr<internal::NodeCore> core_;

@@ -45,6 +45,8 @@ enum class Reason : std::uint8_t {
   kQueueFull,         ///< the bounded input queue was full: the oldest message made room (kDropped)
   kInboxFull,         ///< the command inbox was full: the oldest command made room (kDropped)
   kStopped,           ///< still queued or waiting when the node stopped (kDropped)
+  kTableFull,         ///< a conjunction: every slot of the event table holds a live event
+  kNotApplicable,     ///< a decision that does not apply to the node's state now
   kCount
 };
 

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "evade/autonomy/response.hpp"
 #include "evade/guidance/guidance_law.hpp"
 
 namespace evade::guidance_lcm {
@@ -37,8 +38,14 @@ struct NodeConfig {
   int recv_buf_bytes = 8 * 1024 * 1024;  ///< udpm kernel receive buffer requested (NODE-IN-6)
   bool lockstep = false; ///< subscribe to the sim clock
   AuthPolicy auth;
+  /// The onboard conjunction response (docs/AUTONOMY.md AUT-7): its policy at start
+  /// (--autonomy off|veto|approve; the ground's evade_cam_decision_t changes it) and its
+  /// settings (node.autonomy.*, autonomy::responder_params).
+  autonomy::Policy autonomy = autonomy::Policy::kVeto;
+  autonomy::ResponderConfig response;
 
-  /// Empty when valid, else the parameter tables' error text (node.*, then guidance.*).
+  /// Empty when valid, else the parameter tables' error text (node.*, node.autonomy.*, then
+  /// guidance.*).
   std::string validate() const;
 };
 

@@ -25,14 +25,16 @@
 
 namespace evade::guidance_lcm {
 
-enum class Input : std::uint8_t { kAngles = 0, kNav, kClock, kPlan, kArm, kKeyCmd, kCount };
+enum class Input : std::uint8_t {
+  kAngles = 0, kNav, kClock, kPlan, kArm, kKeyCmd, kConjunction, kCamDecision, kCount
+};
 inline constexpr std::size_t kInputCount = static_cast<std::size_t>(Input::kCount);
 
 enum class InputKind : std::uint8_t { kSensor = 0, kTick = 1, kCommand = 2 };
 
 /// Largest sensor or tick message accepted (evade_angles_t encodes to about 120 B).
 inline constexpr std::size_t kMaxInputBytes = 256;
-/// Largest command accepted (evade_burn_plan_t encodes to 629 B).
+/// Largest command accepted (evade_burn_plan_t encodes to 629 B, evade_conjunction_t to 808 B).
 inline constexpr std::size_t kMaxCommandBytes = 1024;
 
 struct InputRow {
@@ -42,8 +44,8 @@ struct InputRow {
   const char* type;              ///< LCM type on it
   InputKind kind;
   auth::ArsnSlot slot;           ///< anti-replay slot of its signer
-  std::int8_t auth_bit;          ///< evade_guidance_status_t::AUTH_*
-  bool AuthPolicy::*required;    ///< policy flag; nullptr: always required (key commands)
+  std::int16_t auth_bit;         ///< evade_guidance_status_t::AUTH_*
+  bool AuthPolicy::*required;    ///< policy flag; nullptr: always required (key commands, conjunctions, decisions)
   int AuthPolicy::*verify_budget;  ///< MAC verifications per cycle on this channel
   std::size_t max_bytes;
   std::int8_t ack_command;       ///< evade_cmd_ack_t::COMMAND_* (commands), 0 otherwise
@@ -68,6 +70,12 @@ inline constexpr std::array<InputRow, kInputCount> kInputRows = {{
     {Input::kKeyCmd, "key_cmd", kChanKeyCmd, "evade_key_cmd_t", InputKind::kCommand,
      auth::ArsnSlot::kCommand, evade_guidance_status_t::AUTH_KEY_CMD, nullptr, &AuthPolicy::verify_per_cycle_command,
      kMaxCommandBytes, evade_cmd_ack_t::COMMAND_KEY_CMD},
+    {Input::kConjunction, "conjunction", kChanConjunction, "evade_conjunction_t", InputKind::kCommand,
+     auth::ArsnSlot::kCommand, evade_guidance_status_t::AUTH_CONJUNCTION, nullptr,
+     &AuthPolicy::verify_per_cycle_command, kMaxCommandBytes, evade_cmd_ack_t::COMMAND_CONJUNCTION},
+    {Input::kCamDecision, "cam_decision", kChanCamDecision, "evade_cam_decision_t", InputKind::kCommand,
+     auth::ArsnSlot::kCommand, evade_guidance_status_t::AUTH_CAM_DECISION, nullptr,
+     &AuthPolicy::verify_per_cycle_command, kMaxCommandBytes, evade_cmd_ack_t::COMMAND_CAM_DECISION},
 }};
 
 constexpr const InputRow& input_row(Input in) noexcept {
@@ -80,12 +88,12 @@ inline bool input_required(const InputRow& row, const AuthPolicy& p) noexcept {
 }
 
 /// The status's auth_required mask of a policy: the bits of every required input.
-inline std::int8_t auth_required_mask(const AuthPolicy& p) noexcept {
+inline std::int16_t auth_required_mask(const AuthPolicy& p) noexcept {
   int m = 0;
   for (const InputRow& row : kInputRows) {
     if (input_required(row, p)) m |= row.auth_bit;
   }
-  return static_cast<std::int8_t>(m);  // six bits: fits in int8
+  return static_cast<std::int16_t>(m);  // eight bits: fits in int16
 }
 
 }  // namespace evade::guidance_lcm

@@ -32,7 +32,11 @@
 #include "evade/auth/state_file.hpp"
 #include "evade/evade_angles_t.hpp"
 #include "evade/evade_arm_t.hpp"
+#include "evade/autonomy/responder.hpp"
 #include "evade/evade_burn_plan_t.hpp"
+#include "evade/evade_cam_decision_t.hpp"
+#include "evade/evade_cam_proposal_t.hpp"
+#include "evade/evade_conjunction_t.hpp"
 #include "evade/evade_cmd_ack_t.hpp"
 #include "evade/evade_guidance_status_t.hpp"
 #include "evade/evade_key_cmd_t.hpp"
@@ -46,6 +50,7 @@
 #include "evade/guidance_lcm/internal/command_inbox.hpp"
 #include "evade/guidance_lcm/cycle_stats.hpp"
 #include "evade/guidance_lcm/internal/input_queue.hpp"
+#include "evade/guidance_lcm/internal/planning_mailbox.hpp"
 #include "evade/guidance_lcm/internal/raw_publisher.hpp"
 #include "evade/guidance_lcm/internal/seq_tracker.hpp"
 #include "evade/guidance_lcm/internal/verify_budget.hpp"
@@ -91,6 +96,11 @@ class NodeCore {
   std::int64_t auth_persist_failures() const noexcept { return persist_failures_; }
   std::int64_t acks_published() const noexcept { return acks_published_; }
   std::int64_t acks_unsent() const noexcept { return acks_unsent_; }
+  const autonomy::Responder& responder() const noexcept { return responder_; }
+  bool plan_once() noexcept { return planner_.work(); }
+  bool planning_busy() const noexcept { return planner_.busy(); }
+  double last_planning_us() const noexcept { return last_planning_us_; }
+  std::int64_t proposals_published() const noexcept { return proposal_seq_; }
 
  private:
   struct SubContext {
@@ -131,6 +141,17 @@ class NodeCore {
   void execute_key_cmd(CommandInbox::Slot& slot, std::int64_t now_us) noexcept;
   void refuse(CommandInbox::Slot& slot, Verdict v, Reason r, std::int16_t detail,
               std::int64_t now_us) noexcept;
+  // node_autonomy.cpp: the onboard conjunction response (docs/AUTONOMY.md).
+  void execute_conjunction(CommandInbox::Slot& slot, std::int64_t now_us) noexcept;
+  void execute_decision(CommandInbox::Slot& slot, std::int64_t now_us) noexcept;
+  void step_autonomy(std::int64_t now_us) noexcept;
+  void hand_out_job(std::int64_t now_us) noexcept;
+  void watch_onboard_plan() noexcept;
+  void schedule_burn(const autonomy::ResponderAction& act, std::int64_t now_us) noexcept;
+  void cancel_burn(const autonomy::ResponderAction& act) noexcept;
+  void publish_proposals(std::int64_t now_us) noexcept;
+  void publish_proposal(const autonomy::ResponseRecord& r, bool superseded,
+                        std::int64_t now_us) noexcept;
 
   // node_telemetry.cpp: acknowledgements and the status, signed.
   void ack(const CommandInbox::Slot& slot, std::int8_t outcome, Reason r, std::int16_t detail,
@@ -188,12 +209,29 @@ class NodeCore {
   std::uint32_t plan_in_force_size_ = 0;  ///< authenticated bytes of the plan in force
   std::array<std::uint8_t, kMaxCommandBytes> plan_in_force_{};
   std::int64_t key_cmd_last_seq_ = 0;
+  evade_conjunction_t conj_msg_{};
+  evade_cam_decision_t decision_msg_{};
+  // The onboard conjunction response: the responder, the planning worker's mailbox, the jobs
+  // going out and coming back, the onboard burn the executor flies (0: none), the proposals.
+  autonomy::Responder responder_;
+  PlanningMailbox planner_;
+  autonomy::ConjunctionEvent event_{};
+  autonomy::DecisionCommand decision_{};
+  autonomy::PlanningJob job_out_{};
+  autonomy::PlanningJob job_back_{};
+  autonomy::Assessment assessment_back_{};
+  guidance::UplinkedPlan onboard_plan_{};
+  std::int64_t onboard_plan_id_ = 0;
+  double last_planning_us_ = 0.0;
+  std::int64_t proposal_period_cycles_ = 1;  ///< once a second: guidance.rate_hz cycles
+  std::int64_t proposal_seq_ = 0;
+  evade_cam_proposal_t proposal_msg_{};
   auth::KeyCmdResult key_cmd_last_result_ = auth::KeyCmdResult::kNone;
 
   // Authentication (docs/SECURITY.md).
   auth::KeyRing keys_;
   std::unique_ptr<auth::StateFile> state_file_;  // nullptr: memory only (tests)
-  std::int8_t auth_required_mask_ = 0;
+  std::int16_t auth_required_mask_ = 0;
   VerifyBudget budget_;
   std::uint64_t auth_epoch_ = 0;       ///< +1 per change that must be on disk before it counts
   std::uint64_t persisted_epoch_ = 0;  ///< every change up to this epoch is on disk
@@ -224,6 +262,7 @@ class NodeCore {
   RawPublisher<evade_thrust_cmd_t> cmd_pub_;
   SigningPublisher<evade_guidance_status_t> status_pub_;
   SigningPublisher<evade_cmd_ack_t> ack_pub_;
+  SigningPublisher<evade_cam_proposal_t> proposal_pub_;
 };
 
 }  // namespace evade::guidance_lcm::internal
