@@ -68,8 +68,13 @@ std::string write_script(const std::string& dir, bool record, int realtime_facto
     s << "lcm-logger -f -q --lcm-url=\"$URL\" \"$D/hil.lcmlog\" &\nLOG=$!\nsleep 0.5\n";
   }
   s << "'" << EVADE_NODE_PATH << "' --lcm-url \"$URL\" --lockstep --scenario seed0 "
-       "--max-accel-mps2 1 --idle-exit-s 20 --quiet --stats-json > \"$D/node.json\" &\n"
+       "--max-accel-mps2 1 --idle-exit-s 20 --stats-json > \"$D/node.json\" 2> \"$D/node.err\" &\n"
        "NODE=$!\n"
+       // The sim only once the node's banner says every input is subscribed: LCM's udpm
+       // receiver drops a datagram on a channel not yet subscribed (GUIDANCE_NODE.md "Known
+       // pitfalls"). Bounded: 500 polls of 20 ms.
+       "i=0; until grep -q 'evade_guidance_node: lockstep' \"$D/node.err\"; do\n"
+       "  i=$((i+1)); [ $i -lt 500 ] || { echo 'no node banner' >&2; exit 3; }; sleep 0.02; done\n"
        << (record ? "EVADE_SIM_LCM_REALTIME_FACTOR=" + std::to_string(realtime_factor) + " " : "") << "'" << EVADE_CLI_PATH << "' sim --scenario seed0 --accel 1 --detect 10 --lcm \"$URL\" "
        "--lcm-timeout-s 10 --json > \"$D/sim_lcm.json\"\n"
        "kill -TERM $NODE; wait $NODE\n";
