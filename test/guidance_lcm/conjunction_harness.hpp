@@ -3,7 +3,8 @@
 // clock, the node's navigation flown along the very orbit the event's own state is on (two-body
 // + J2, the onboard propagator, so the nav check passes), the uplinked evade_conjunction_t and
 // evade_cam_decision_t, and a recorder of the node's proposals that verifies each under the
-// telemetry key exactly as the ground does.
+// telemetry key exactly as the ground does; Flight, the node flying that orbit with the ground's
+// signer and recorders.
 #pragma once
 
 #include <cstdint>
@@ -141,6 +142,51 @@ class ProposalRecorder {
   lcm_subscription_t* sub_ = nullptr;
   std::vector<evade_cam_proposal_t> msgs_;
   int unverified_ = 0;
+};
+
+inline NodeConfig config(autonomy::Policy p = autonomy::Policy::kVeto) {
+  NodeConfig c;
+  c.autonomy = p;
+  return c;
+}
+
+// The node flying the example's own orbit, the ground's signer, and what the ground receives.
+struct Flight {
+  explicit Flight(autonomy::Policy p = autonomy::Policy::kVeto) : Flight(config(p)) {}
+  explicit Flight(const NodeConfig& c)
+      : rig(c), nav(node_event()), acks(rig.lcm.get()), proposals(rig.lcm.get()) {}
+  /// One cycle at t_us with the nav of that instant.
+  const evade_thrust_cmd_t& step(std::int64_t t_us) {
+    rig.pub.send(kChanNav, nav.at(t_us, ++nav_seq));
+    return rig.cycle(t_us);
+  }
+  /// Regular cycles over [t0, t1); returns how many thrust.
+  int steps(std::int64_t t0, std::int64_t t1) {
+    int n = 0;
+    for (std::int64_t t = t0; t < t1; t += kPeriodUs) n += step(t).accel_mps2 > 0.0 ? 1 : 0;
+    last_t = t1;
+    return n;
+  }
+  /// The event uplinked at kT0, assessed by the worker (this thread, in its place), proposed.
+  const evade_cam_proposal_t* propose(const autonomy::ConjunctionEvent& e = node_event()) {
+    rig.pub.send(kChanConjunction, conjunction_msg(e, 1));
+    step(kT0);
+    EXPECT_TRUE(rig.node.plan_once()) << "the cycle handed out no job";
+    steps(kT0 + kPeriodUs, kT0 + 3 * kPeriodUs);  // collect, publish, and deliver the proposal
+    return proposals.last(e.event_id, e.version);
+  }
+  void decide(const evade_cam_decision_t& d) { rig.pub.send(kChanCamDecision, d); }
+  std::int64_t state(std::int64_t id) const {
+    const evade_cam_proposal_t* p = proposals.last(id);
+    return p == nullptr ? -1 : p->state;
+  }
+
+  Rig rig;
+  OrbitNav nav;
+  AckRecorder acks;
+  ProposalRecorder proposals;
+  std::int64_t nav_seq = 0;
+  std::int64_t last_t = kT0;
 };
 
 }  // namespace evade::guidance_lcm::test

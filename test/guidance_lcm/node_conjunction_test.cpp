@@ -23,50 +23,6 @@ using Ack = evade_cmd_ack_t;
 using Prop = evade_cam_proposal_t;
 using Dec = evade_cam_decision_t;
 
-NodeConfig config(Policy p = Policy::kVeto) {
-  NodeConfig c;
-  c.autonomy = p;
-  return c;
-}
-
-// The node flying the example's own orbit, the ground's signer, and what the ground receives.
-struct Flight {
-  explicit Flight(Policy p = Policy::kVeto)
-      : rig(config(p)), nav(node_event()), acks(rig.lcm.get()), proposals(rig.lcm.get()) {}
-  /// One cycle at t_us with the nav of that instant.
-  const evade_thrust_cmd_t& step(std::int64_t t_us) {
-    rig.pub.send(kChanNav, nav.at(t_us, ++nav_seq));
-    return rig.cycle(t_us);
-  }
-  /// Regular cycles over [t0, t1); returns how many thrust.
-  int steps(std::int64_t t0, std::int64_t t1) {
-    int n = 0;
-    for (std::int64_t t = t0; t < t1; t += kPeriodUs) n += step(t).accel_mps2 > 0.0 ? 1 : 0;
-    last_t = t1;
-    return n;
-  }
-  /// The event uplinked at kT0, assessed by the worker (this thread, in its place), proposed.
-  const Prop* propose(const autonomy::ConjunctionEvent& e = node_event()) {
-    rig.pub.send(kChanConjunction, conjunction_msg(e, 1));
-    step(kT0);
-    EXPECT_TRUE(rig.node.plan_once()) << "the cycle handed out no job";
-    steps(kT0 + kPeriodUs, kT0 + 3 * kPeriodUs);  // collect, publish, and deliver the proposal
-    return proposals.last(e.event_id, e.version);
-  }
-  void decide(const Dec& d) { rig.pub.send(kChanCamDecision, d); }
-  std::int64_t state(std::int64_t id) const {
-    const Prop* p = proposals.last(id);
-    return p == nullptr ? -1 : p->state;
-  }
-
-  Rig rig;
-  OrbitNav nav;
-  AckRecorder acks;
-  ProposalRecorder proposals;
-  std::int64_t nav_seq = 0;
-  std::int64_t last_t = kT0;
-};
-
 TEST(NodeConjunction, SignedConjunctionIsTrackedAssessedBesideTheCycleAndProposed) {
   Flight f;
   const autonomy::ConjunctionEvent e = node_event();
