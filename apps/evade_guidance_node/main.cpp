@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/auth/key_file.hpp"
+#include "evade/autonomy/response.hpp"
 #include "evade/config/scenario.hpp"
 #include "evade/core/quantile.hpp"
 #include "evade/guidance_lcm/guidance_node.hpp"
@@ -216,6 +217,18 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
                {"dv_total_mps", ps.dv_total_mps},
                {"ack_id", n.last_status().plan_ack_id},
                {"ack_result", n.last_status().plan_ack_result}};
+  const evade::autonomy::ResponderCounters& ac = n.responder().counters();
+  j["autonomy"] = {{"policy", evade::autonomy::policy_name(n.responder().policy())},
+                   {"events_tracked", ac.events_tracked},
+                   {"events_replaced", ac.events_replaced},
+                   {"events_again", ac.events_again},
+                   {"events_refused", ac.events_bad + ac.events_not_newer + ac.events_table_full},
+                   {"decisions_applied", ac.decisions_applied},
+                   {"decisions_again", ac.decisions_again},
+                   {"decisions_refused", ac.decisions_refused},
+                   {"proposals", ac.proposals},
+                   {"burns_loaded", ac.schedules},
+                   {"burns_cancelled", ac.cancels}};
   j["exit_reason"] = res.why;
   return j;
 }

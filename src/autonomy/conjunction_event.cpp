@@ -56,6 +56,14 @@ bool window_ordered(const ConjunctionEvent& e) noexcept {
 
 }  // namespace
 
+bool same_event(const ConjunctionEvent& a, const ConjunctionEvent& b) noexcept {
+  return a.event_id == b.event_id && a.version == b.version && a.tca_us == b.tca_us &&
+         a.x1_eci == b.x1_eci && a.cov1_eci == b.cov1_eci && a.x2_eci == b.x2_eci &&
+         a.cov2_eci == b.cov2_eci && a.hbr_m == b.hbr_m && a.pc_red == b.pc_red &&
+         a.pc_target == b.pc_target && a.burn_start_us == b.burn_start_us &&
+         a.burn_end_us == b.burn_end_us && a.veto_deadline_us == b.veto_deadline_us;
+}
+
 EventProblem check_event(const ConjunctionEvent& e, std::int64_t now_us) noexcept {
   if (e.event_id <= 0 || e.version <= 0) return EventProblem::kBadId;
   if (!all_finite(e)) return EventProblem::kNotFinite;

@@ -21,6 +21,7 @@ InsertResult EventTable::insert(const ConjunctionEvent& e, std::int64_t now_us,
   std::size_t i = find(e.event_id);
   if (i < kMaxEvents) {
     Slot& s = slots_[i];
+    if (e.version == s.event.version && same_event(e, s.event)) return InsertResult::kSameVersion;
     if (e.version <= s.event.version) return InsertResult::kNotNewer;
     s.superseded_version = s.event.version;
     s.event = e;

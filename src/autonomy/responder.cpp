@@ -8,13 +8,15 @@ namespace evade::autonomy {
 
 const char* decision_result_name(DecisionResult r) noexcept {
   static constexpr const char* kNames[] = {"applied", "bad_decision", "unknown_event", "not_pending",
-                                           "wrong_proposal", "past_deadline", "autonomy_off"};
+                                           "wrong_proposal", "past_deadline", "autonomy_off",
+                                           "already_applied"};
   const auto i = static_cast<std::size_t>(r);
   return i < sizeof(kNames) / sizeof(kNames[0]) ? kNames[i] : "unknown";
 }
 
 const char* event_result_name(EventResult r) noexcept {
-  static constexpr const char* kNames[] = {"tracked", "replaced", "bad_event", "not_newer", "table_full"};
+  static constexpr const char* kNames[] = {"tracked", "replaced", "bad_event", "not_newer", "table_full",
+                                           "already_tracked"};
   const auto i = static_cast<std::size_t>(r);
   return i < sizeof(kNames) / sizeof(kNames[0]) ? kNames[i] : "unknown";
 }
@@ -23,6 +25,17 @@ namespace {
 
 bool awaiting_decision(ResponseState s) noexcept {
   return s == ResponseState::kProposed || s == ResponseState::kVetoed || s == ResponseState::kReportOnly;
+}
+
+// The decision is the one in force for the record: a veto of a vetoed proposal, an approval of
+// an approved one (waiting, loaded or flown). Before or after the deadline alike: a copy of a
+// decision that was applied in time, answered after it, must not read as refused.
+bool already_applied(const DecisionCommand& d, const ResponseRecord& r) noexcept {
+  if (r.proposal_id == 0 || d.proposal_id != r.proposal_id) return false;
+  if (d.kind == DecisionCommand::Kind::kVeto) return r.state == ResponseState::kVetoed;
+  return d.kind == DecisionCommand::Kind::kApprove && r.approved &&
+         (r.state == ResponseState::kProposed || r.state == ResponseState::kScheduled ||
+          r.state == ResponseState::kExecuted);
 }
 
 bool counts_as_other(ResponseState s) noexcept {
@@ -57,6 +70,10 @@ EventResult Responder::receive_event(const ConjunctionEvent& e, std::int64_t now
   if (ins == InsertResult::kNotNewer) {
     ++counters_.events_not_newer;
     return EventResult::kNotNewer;
+  }
+  if (ins == InsertResult::kSameVersion) {
+    ++counters_.events_again;
+    return EventResult::kAlreadyTracked;
   }
   if (ins == InsertResult::kTableFull) {
     ++counters_.events_table_full;
@@ -99,6 +116,8 @@ DecisionResult Responder::receive_decision(const DecisionCommand& d, std::int64_
   const DecisionResult res = decide(d, now_us);
   if (res == DecisionResult::kApplied) {
     ++counters_.decisions_applied;
+  } else if (res == DecisionResult::kAlreadyApplied) {
+    ++counters_.decisions_again;
   } else {
     ++counters_.decisions_refused;
   }
@@ -116,6 +135,7 @@ DecisionResult Responder::decide(const DecisionCommand& d, std::int64_t now_us) 
   const std::size_t i = table_.find(d.event_id);
   if (i >= kMaxEvents) return DecisionResult::kUnknownEvent;
   ResponseRecord& r = rec_[i];
+  if (already_applied(d, r)) return DecisionResult::kAlreadyApplied;
   if (r.proposal_id == 0 || !awaiting_decision(r.state)) {
     return r.state == ResponseState::kScheduled ? DecisionResult::kPastDeadline : DecisionResult::kNotPending;
   }

@@ -26,7 +26,8 @@ static_assert(static_cast<int>(autonomy::Policy::kApprove) == evade_cam_decision
 static_assert(static_cast<int>(autonomy::DecisionCommand::Kind::kSetAutonomy) ==
                   evade_cam_decision_t::DECISION_SET_AUTONOMY,
               "DecisionCommand::Kind values are the decision's DECISION_* codes");
-static_assert(static_cast<int>(DecisionResult::kAutonomyOff) == Ack::DECIDE_AUTONOMY_OFF &&
+static_assert(static_cast<int>(DecisionResult::kAlreadyApplied) == Ack::DECIDE_ALREADY_APPLIED &&
+                  static_cast<int>(DecisionResult::kAutonomyOff) == Ack::DECIDE_AUTONOMY_OFF &&
                   static_cast<int>(DecisionResult::kUnknownEvent) == Ack::DECIDE_UNKNOWN_EVENT,
               "DecisionResult values are the acknowledgement's DECIDE_* codes");
 
@@ -51,6 +52,19 @@ void state6(const double (&r)[3], const double (&v)[3], Vec6* x) noexcept {
 
 void put3(const Vec3& v, double (&a)[3]) noexcept {
   for (int i = 0; i < 3; ++i) a[i] = v(i);
+}
+
+void put_state6(const Vec6& x, double (&r)[3], double (&v)[3]) noexcept {
+  for (int i = 0; i < 3; ++i) {
+    r[i] = x(i);
+    v[i] = x(i + 3);
+  }
+}
+
+void put6(const Mat6& m, double (&a)[6][6]) noexcept {
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) a[i][j] = m(i, j);
+  }
 }
 
 void put_assessment(const autonomy::Assessment& a, evade_cam_proposal_t* out) noexcept {
@@ -110,6 +124,35 @@ void from_lcm(const evade_cam_decision_t& m, autonomy::DecisionCommand* out) noe
   out->autonomy = static_cast<std::uint8_t>(m.autonomy);
 }
 
+void to_lcm(const autonomy::ConjunctionEvent& e, std::int64_t utime, std::int64_t seq,
+            evade_conjunction_t* out) noexcept {
+  out->utime = utime;
+  out->seq = seq;
+  out->event_id = e.event_id;
+  out->version = e.version;
+  out->tca_utime = e.tca_us;
+  put_state6(e.x1_eci, out->r1_eci_m, out->v1_eci_mps);
+  put_state6(e.x2_eci, out->r2_eci_m, out->v2_eci_mps);
+  put6(e.cov1_eci, out->cov1_eci);
+  put6(e.cov2_eci, out->cov2_eci);
+  out->hbr_m = e.hbr_m;
+  out->pc_red = e.pc_red;
+  out->pc_target = e.pc_target;
+  out->burn_window_start_utime = e.burn_start_us;
+  out->burn_window_end_utime = e.burn_end_us;
+  out->veto_deadline_utime = e.veto_deadline_us;
+}
+
+void to_lcm(const autonomy::DecisionCommand& d, std::int64_t utime, std::int64_t seq,
+            evade_cam_decision_t* out) noexcept {
+  out->utime = utime;
+  out->seq = seq;
+  out->decision = static_cast<std::int8_t>(d.kind);
+  out->event_id = d.event_id;
+  out->proposal_id = d.proposal_id;
+  out->autonomy = static_cast<std::int8_t>(d.autonomy);
+}
+
 void to_lcm(const autonomy::ResponseRecord& r, autonomy::Policy policy, std::int64_t now_us,
             bool superseded, evade_cam_proposal_t* out) noexcept {
   out->utime = now_us;
@@ -135,6 +178,8 @@ CommandOutcome conjunction_outcome(EventResult r, EventProblem p) noexcept {
     case EventResult::kReplaced: return {Verdict::kConsumed, Reason::kOk, Ack::CONJ_REPLACED};
     case EventResult::kNotNewer: return {Verdict::kStale, Reason::kOutOfOrderSeq, Ack::CONJ_NOT_NEWER};
     case EventResult::kTableFull: return {Verdict::kRejected, Reason::kTableFull, Ack::CONJ_TABLE_FULL};
+    case EventResult::kAlreadyTracked:
+      return {Verdict::kStale, Reason::kDuplicateSeq, Ack::CONJ_ALREADY_TRACKED, true};
     case EventResult::kBadEvent: break;
   }
   const Reason why = p == EventProblem::kNotFinite ? Reason::kNotFinite : Reason::kOutOfRange;
@@ -144,6 +189,7 @@ CommandOutcome conjunction_outcome(EventResult r, EventProblem p) noexcept {
 CommandOutcome decision_outcome(DecisionResult r) noexcept {
   const auto detail = static_cast<std::int16_t>(r);
   if (r == DecisionResult::kApplied) return {Verdict::kConsumed, Reason::kOk, detail};
+  if (r == DecisionResult::kAlreadyApplied) return {Verdict::kStale, Reason::kDuplicateSeq, detail, true};
   if (r == DecisionResult::kBadDecision) return {Verdict::kRejected, Reason::kOutOfRange, detail};
   return {Verdict::kRejected, Reason::kNotApplicable, detail};
 }

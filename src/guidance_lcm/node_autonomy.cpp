@@ -15,6 +15,7 @@ namespace {
 using Ack = evade_cmd_ack_t;
 
 std::int8_t outcome_code(const CommandOutcome& o) noexcept {
+  if (o.in_force) return Ack::OUTCOME_ALREADY_IN_FORCE;  // a retransmission: nothing changed
   return o.reason == Reason::kOk ? Ack::OUTCOME_ACCEPTED : Ack::OUTCOME_REFUSED;
 }
 
@@ -26,14 +27,14 @@ void NodeCore::execute_conjunction(CommandInbox::Slot& s, std::int64_t now_us) n
   const autonomy::EventResult r = responder_.receive_event(event_, now_us, &problem);
   const CommandOutcome o = conjunction_outcome(r, problem);
   counts_.add(o.verdict, o.reason);
-  ack(s, outcome_code(o), o.reason, o.detail, 0, now_us);
+  ack(s, outcome_code(o), o.in_force ? Reason::kOk : o.reason, o.detail, 0, now_us);
 }
 
 void NodeCore::execute_decision(CommandInbox::Slot& s, std::int64_t now_us) noexcept {
   from_lcm(decision_msg_, &decision_);
   const CommandOutcome o = decision_outcome(responder_.receive_decision(decision_, now_us));
   counts_.add(o.verdict, o.reason);
-  ack(s, outcome_code(o), o.reason, o.detail, 0, now_us);
+  ack(s, outcome_code(o), o.in_force ? Reason::kOk : o.reason, o.detail, 0, now_us);
 }
 
 // Once per cycle, after the commands: the worker's finished job back to the responder, the

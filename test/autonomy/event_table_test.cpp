@@ -37,7 +37,8 @@ TEST(EventTable, ANewerVersionSupersedesAndTheSameOrOlderIsRefused) {
   EventTable t;
   std::size_t s1 = kMaxEvents, s2 = kMaxEvents;
   ASSERT_EQ(t.insert(event(7, 2, 100), 0, &s1), InsertResult::kNew);
-  EXPECT_EQ(t.insert(event(7, 2, 100), 0), InsertResult::kNotNewer);
+  EXPECT_EQ(t.insert(event(7, 2, 100), 0), InsertResult::kSameVersion) << "a retransmission";
+  EXPECT_EQ(t.insert(event(7, 2, 101), 0), InsertResult::kNotNewer) << "the same version altered";
   EXPECT_EQ(t.insert(event(7, 1, 100), 0), InsertResult::kNotNewer);
   ASSERT_EQ(t.insert(event(7, 5, 90), 0, &s2), InsertResult::kNewVersion);
   EXPECT_EQ(s1, s2);

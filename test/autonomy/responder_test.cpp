@@ -161,6 +161,27 @@ TEST(Responder, OffThenVetoRevivesAProposalOnlyBeforeItsDeadline) {
   EXPECT_EQ(q.record(t).state, ResponseState::kProposed);
 }
 
+TEST(Responder, ARetransmittedDecisionIsAlreadyAppliedBeforeAndAfterTheDeadline) {
+  Responder r(Policy::kVeto);
+  const std::size_t s = propose(&r, event(1, 1));
+  const std::int64_t pid = r.record(s).proposal_id;
+  const std::int64_t deadline = r.record(s).veto_deadline_us;
+  ASSERT_EQ(r.receive_decision(decision(DecisionCommand::Kind::kVeto, 1, pid), kNow), DecisionResult::kApplied);
+  EXPECT_EQ(r.receive_decision(decision(DecisionCommand::Kind::kVeto, 1, pid), kNow + kS),
+            DecisionResult::kAlreadyApplied);
+  EXPECT_EQ(r.receive_decision(decision(DecisionCommand::Kind::kVeto, 1, pid), deadline + kS),
+            DecisionResult::kAlreadyApplied) << "a copy answered late still names the veto in force";
+  EXPECT_EQ(r.receive_decision(decision(DecisionCommand::Kind::kVeto, 1, pid + 1), kNow + kS),
+            DecisionResult::kWrongProposal) << "only the very decision is a retransmission";
+  EXPECT_EQ(r.receive_decision(decision(DecisionCommand::Kind::kApprove, 1, pid), deadline + kS),
+            DecisionResult::kPastDeadline) << "a change after the deadline is refused";
+  EXPECT_EQ(r.record(s).state, ResponseState::kVetoed);
+  const ResponderCounters& c = r.counters();
+  EXPECT_EQ(c.decisions_applied, 1);
+  EXPECT_EQ(c.decisions_again, 2);
+  EXPECT_EQ(c.decisions_refused, 2);
+}
+
 TEST(Responder, DecisionsAfterTheDeadlineAreRefusedAndTheLatestBeforeItCounts) {
   Responder r(Policy::kVeto);
   const std::size_t s = propose(&r, event(1, 1));
@@ -275,9 +296,15 @@ TEST(Responder, EveryEventIsCountedWhateverBecomesOfIt) {
   for (std::int64_t id = 1; id <= static_cast<std::int64_t>(kMaxEvents); ++id)
     EXPECT_EQ(r.receive_event(event(id, 1), kNow), EventResult::kTracked);
   EXPECT_EQ(r.receive_event(event(99, 1), kNow), EventResult::kTableFull);
-  EXPECT_EQ(r.receive_event(event(3, 1), kNow), EventResult::kNotNewer);
+  EXPECT_EQ(r.receive_event(event(3, 1), kNow), EventResult::kAlreadyTracked) << "a retransmission";
+  ConjunctionEvent altered = event(3, 1);
+  altered.hbr_m += 1.0;
+  EXPECT_EQ(r.receive_event(altered, kNow), EventResult::kNotNewer) << "version 1 again, altered";
   const ResponderCounters& c = r.counters();
-  EXPECT_EQ(c.events_bad + c.events_tracked + c.events_table_full + c.events_not_newer, 11);
+  EXPECT_EQ(c.events_bad + c.events_tracked + c.events_table_full + c.events_not_newer +
+                c.events_again,
+            12);
+  EXPECT_EQ(c.events_again, 1);
   EXPECT_EQ(c.events_tracked, static_cast<std::int64_t>(kMaxEvents));
   // An assessing event whose TCA passes expires.
   EXPECT_EQ(r.tick(event(1, 1).tca_us, false).kind, ResponderAction::Kind::kNone);

@@ -1,5 +1,6 @@
 // The onboard conjunction response's edges through the node (docs/AUTONOMY.md AUT-1, AUT-7,
-// AUT-8): every problem of an uplinked event named in its acknowledgement; the ninth live event
+// AUT-8): every problem of an uplinked event named in its acknowledgement; a retransmitted event
+// or decision answered ALREADY_IN_FORCE, an altered one refused; the ninth live event
 // refused as table_full; an unknown decision refused out_of_range; the loaded burn withdrawn
 // (PLAN_END_CANCELLED_ONBOARD) when the autonomy goes off or a newer version arrives; a ground
 // plan that replaces the onboard burn, or is active at the deadline, leaves the event to the
@@ -55,6 +56,58 @@ TEST(NodeConjunctionEdges, EveryProblemOfAnEventIsNamedInItsAcknowledgement) {
   EXPECT_EQ(f.rig.node.responder().counters().events_tracked, 0);
   EXPECT_EQ(reason(f.rig, Reason::kOutOfRange), 5);
   expect_accounted(f.rig);
+}
+
+// The ground sends a command again, signed afresh, until it hears the node's answer
+// (docs/SECURITY.md UPLINK-*): the copy of a tracked event is answered ALREADY_IN_FORCE and
+// changes nothing; the same version with any field changed is not a copy and is refused
+// not_newer (an event changes only with a new version).
+TEST(NodeConjunctionEdges, ARetransmittedEventIsAlreadyInForceAndAnAlteredOneIsRefused) {
+  Flight f;
+  autonomy::ConjunctionEvent altered = node_event();
+  altered.hbr_m *= 2.0;
+  const std::vector<evade_cmd_ack_t> acks = uplink_each(f, {node_event(), node_event(), altered});
+  ASSERT_EQ(acks.size(), 3U);
+  EXPECT_EQ(acks[0].outcome, Ack::OUTCOME_ACCEPTED);
+  EXPECT_EQ(acks[1].outcome, Ack::OUTCOME_ALREADY_IN_FORCE);
+  EXPECT_EQ(acks[1].reason, Ack::REASON_OK);
+  EXPECT_EQ(acks[1].detail, Ack::CONJ_ALREADY_TRACKED);
+  EXPECT_EQ(acks[2].outcome, Ack::OUTCOME_REFUSED);
+  EXPECT_EQ(acks[2].detail, Ack::CONJ_NOT_NEWER);
+  EXPECT_EQ(f.rig.node.responder().counters().events_tracked, 1);
+  EXPECT_EQ(f.rig.node.responder().counters().events_replaced, 0);
+  EXPECT_EQ(f.rig.node.responder().counters().events_again, 1);
+  EXPECT_EQ(f.rig.node.responder().record(0).superseded_version, 0);
+  expect_accounted(f.rig);
+}
+
+// A veto sent again, before the deadline or after it (its first copy applied in time, the
+// answer lost): ALREADY_IN_FORCE, never refused past_deadline; an approval likewise.
+TEST(NodeConjunctionEdges, ARetransmittedDecisionIsAlreadyInForceEvenAfterTheDeadline) {
+  for (const std::int8_t kind : {Dec::DECISION_VETO, Dec::DECISION_APPROVE}) {
+    Flight f(kind == Dec::DECISION_VETO ? Policy::kVeto : Policy::kApprove);
+    const Prop* p = f.propose();
+    ASSERT_NE(p, nullptr);
+    const Prop proposed = *p;
+    for (int copy = 0; copy < 2; ++copy) {
+      f.decide(decision_msg(kind, 7, proposed.proposal_id));
+      f.steps(kT0 + (3 + 2 * copy) * kPeriodUs, kT0 + (5 + 2 * copy) * kPeriodUs);
+    }
+    const std::int64_t t = proposed.veto_deadline_utime + 2 * kPeriodUs;
+    f.steps(proposed.veto_deadline_utime - kPeriodUs, t);
+    f.decide(decision_msg(kind, 7, proposed.proposal_id));
+    f.steps(t, t + 2 * kPeriodUs);
+    const std::vector<evade_cmd_ack_t>& acks = f.acks.acks();
+    ASSERT_EQ(acks.size(), 4U);
+    EXPECT_EQ(acks[1].outcome, Ack::OUTCOME_ACCEPTED);
+    for (std::size_t i = 2; i < 4; ++i) {
+      EXPECT_EQ(acks[i].outcome, Ack::OUTCOME_ALREADY_IN_FORCE) << i;
+      EXPECT_EQ(acks[i].detail, Ack::DECIDE_ALREADY_APPLIED) << i;
+    }
+    EXPECT_EQ(f.rig.node.responder().counters().decisions_applied, 1);
+    EXPECT_EQ(f.state(7), kind == Dec::DECISION_VETO ? Prop::STATE_VETOED : Prop::STATE_SCHEDULED);
+    expect_accounted(f.rig);
+  }
 }
 
 TEST(NodeConjunctionEdges, TheNinthLiveEventIsRefusedAsTableFull) {

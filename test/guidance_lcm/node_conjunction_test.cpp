@@ -159,8 +159,8 @@ TEST(NodeConjunction, NewerVersionSupersedesTheOlderProposal) {
   f.steps(kT0 + 5 * kPeriodUs, kT0 + 8 * kPeriodUs);
   EXPECT_EQ(f.proposals.last(7, 2)->state, Prop::STATE_PROPOSED);
   EXPECT_NE(f.proposals.last(7, 2)->proposal_id, old_id);
-  // The same version again is not newer: refused, counted stale, nothing changes.
-  f.rig.pub.send(kChanConjunction, conjunction_msg(node_event(7, 2), 3));
+  // The older version again is not newer: refused, counted stale, nothing changes.
+  f.rig.pub.send(kChanConjunction, conjunction_msg(node_event(7, 1), 3));
   f.steps(kT0 + 8 * kPeriodUs, kT0 + 10 * kPeriodUs);
   EXPECT_EQ(f.acks.acks().back().detail, Ack::CONJ_NOT_NEWER);
   EXPECT_EQ(f.acks.acks().back().reason, Ack::REASON_OUT_OF_ORDER_SEQ);

@@ -48,6 +48,9 @@ enum class EventProblem : std::uint8_t {
 };
 const char* event_problem_name(EventProblem p) noexcept;
 
+/// True when every field of a equals b's (checked events: no NaN).
+bool same_event(const ConjunctionEvent& a, const ConjunctionEvent& b) noexcept;
+
 /// The first problem of e at now_us, kNone when every field is in range.
 EventProblem check_event(const ConjunctionEvent& e, std::int64_t now_us) noexcept;
 

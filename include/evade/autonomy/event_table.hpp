@@ -2,7 +2,7 @@
 // slots. An uplinked event goes into the slot of its id when its version is newer (the older
 // version is superseded and reported), into a free slot when its id is new, or, when every slot
 // is taken, into the slot of an event that is over (TCA passed); a table of live events refuses
-// it (table_full). Flight code: no allocation, no exceptions, loops bounded by kMaxEvents.
+// it (table_full). The tracked version again, field for field, is a retransmission (same_version). Flight code: no allocation, no exceptions, loops bounded by kMaxEvents.
 #pragma once
 
 #include <array>
@@ -19,6 +19,7 @@ enum class InsertResult : std::uint8_t {
   kNew = 0,        ///< a new event id in a slot of its own
   kNewVersion,     ///< a newer version replaced the slot's older one (superseded)
   kNotNewer,       ///< the event id is tracked with this version or a newer one: refused
+  kSameVersion,    ///< the very event tracked, sent again (a retransmission): nothing changes
   kTableFull,      ///< every slot holds a live event: refused
 };
 

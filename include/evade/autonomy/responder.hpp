@@ -53,6 +53,7 @@ enum class DecisionResult : std::uint8_t {
   kWrongProposal,  ///< the event's proposal is another one (re-planned or a new version)
   kPastDeadline,   ///< the veto deadline has passed
   kAutonomyOff,    ///< an approval while the policy is off
+  kAlreadyApplied, ///< that very veto or approval of that proposal is in force (a retransmission)
 };
 const char* decision_result_name(DecisionResult r) noexcept;
 
@@ -63,6 +64,7 @@ enum class EventResult : std::uint8_t {
   kBadEvent,       ///< check_event found a problem (EventProblem)
   kNotNewer,       ///< that version or a newer one is tracked
   kTableFull,      ///< every slot holds a live event
+  kAlreadyTracked, ///< the very event tracked, sent again (a retransmission): nothing changes
 };
 const char* event_result_name(EventResult r) noexcept;
 
@@ -97,8 +99,8 @@ struct ResponseRecord {
 
 struct ResponderCounters {
   std::int64_t events_tracked = 0, events_replaced = 0;
-  std::int64_t events_bad = 0, events_not_newer = 0, events_table_full = 0;
-  std::int64_t decisions_applied = 0, decisions_refused = 0;
+  std::int64_t events_bad = 0, events_not_newer = 0, events_table_full = 0, events_again = 0;
+  std::int64_t decisions_applied = 0, decisions_refused = 0, decisions_again = 0;
   std::int64_t jobs = 0, stale_results = 0, proposals = 0, schedules = 0, cancels = 0;
 };
 
