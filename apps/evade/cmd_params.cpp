@@ -11,6 +11,7 @@
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
+#include "evade/commands/conjunction_uplink_command.hpp"
 #include "evade/commands/screen_scenario.hpp"
 #include "evade/core/earth_params.hpp"
 #include "evade/commands/propagate_command.hpp"
@@ -80,6 +81,8 @@ std::string formation_to_cam_sections() {
                 "assessment.", assessment::assess_params());
   md += section("Collision-avoidance manoeuvre", "`evade plan cam`", "cam.",
                 cam::cam_params());
+  md += section("Conjunction uplink (onboard response)", "`evade conjunction`", "uplink.",
+                commands::conjunction_uplink_params());
   return md;
 }
 

@@ -50,4 +50,18 @@ void TelemetryWatch::on_status(const lcm_recv_buf_t* rbuf, const char* channel,
   w->have_status = true;
 }
 
+void TelemetryWatch::on_proposal(const lcm_recv_buf_t* rbuf, const char* channel,
+                                 void* user) noexcept {
+  auto* w = static_cast<TelemetryWatch*>(user);
+  evade_cam_proposal_t m{};
+  if (!read_verified(*w, rbuf, channel, &m)) {
+    ++w->ignored;
+    return;
+  }
+  ++w->proposals_verified;
+  if (w->proposal_event == 0 || m.event_id != w->proposal_event) return;
+  w->proposal = m;
+  w->have_proposal = true;
+}
+
 }  // namespace evade::lcm_link

@@ -12,6 +12,7 @@
 #include "evade/assessment/assess_params.hpp"
 #include "evade/config/param_flags.hpp"
 #include "evade/config/read_params.hpp"
+#include "evade/commands/conjunction_uplink_command.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/commands/screen_scenario.hpp"
 #include "evade/guidance/guidance_params.hpp"
@@ -45,7 +46,8 @@ std::vector<Table> tables() {
           table("", threat::evasion_params()),
           table("", commands::screen_scenario_params()),
           table("assessment.", assessment::assess_params()),
-          table("robust.", conjunction::screen_options_params())};
+          table("robust.", conjunction::screen_options_params()),
+          table("uplink.", commands::conjunction_uplink_params())};
 }
 
 const ParamSpec* declaration(const std::string& key) {
@@ -82,7 +84,7 @@ TEST(ParamFlags, EveryFlagIsDeclaredWithItsKeyCarriesItsUnitAndIsSpelledOnce) {
       }
     }
   }
-  EXPECT_EQ(flags, 17u);  // the flags of README.md "Flags": each declared with its row
+  EXPECT_EQ(flags, 24u);  // the flags of README.md "Flags" (7 of them evade conjunction's): each declared with its row
 }
 
 TEST(ParamFlags, TheReadmeFlagsSetTheirKeys) {

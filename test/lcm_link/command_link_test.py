@@ -22,14 +22,25 @@ CASE (one ctest each):
                      ground with the right clock is not locked out; a clock 0.7 s behind arms
   lost_counter       row 9: the ground's ARSN counter file deleted: the next command recovers
                      from the node's answer (exit 0, one recovery) without a node restart
+  conjunction        issue 43 AUT-1: `evade conjunction --publish` of a CDM whose TCA is a day
+                     ahead: tracked (exit 0), the same again `already in force` (exit 0), a
+                     higher --event-version replaces it, the lower one is refused `not_newer`
+                     (exit 3); a TCA in the past or --pc-target above --pc-red: exit 2 before
+                     anything is sent
+  cam_decide         AUT-7: `evade cam decide` on an event without a proposal (the node has no
+                     navigation): `no_proposal` from the node's signed proposal (exit 3, nothing
+                     sent), a named proposal refused `not_pending` (exit 3); --autonomy off
+                     accepted; the node's stats count each
   node_start         row 5: the node refuses to start (exit 2, one line naming the file) from a
                      deleted, cut or edited state file or one with mode 0666; --auth-init
                      refuses to overwrite one
 Exit 0 pass, 1 fail (every failed check printed), 77 skipped (no user namespaces; skewed_clock
 without faketime).
 """
+import datetime
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -199,6 +210,91 @@ def case_lost_counter(b, c):
     b.stop_node()
 
 
+def write_cdm(b, name, tca_from_now_s):
+    """The shipped CAM example CDM with its TCA tca_from_now_s from now and created now."""
+    src = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios",
+                       "cdm", "cam-example.cdm")
+    now = datetime.datetime.now(datetime.timezone.utc)
+    fmt = "%Y-%m-%dT%H:%M:%S.000"
+    text = open(src).read()
+    text = re.sub(r"^TCA\s*=.*$", "TCA = " + (now + datetime.timedelta(seconds=tca_from_now_s))
+                  .strftime(fmt), text, flags=re.M)
+    text = re.sub(r"^CREATION_DATE\s*=.*$", "CREATION_DATE = " + now.strftime(fmt), text,
+                  flags=re.M)
+    with open(b.path(name), "w") as f:
+        f.write(text)
+    return b.path(name)
+
+
+def conjunction(b, cdm, *extra):
+    rc, j, err = b.ground("conjunction", "--cdm", cdm, "--hbr-m", "20", "--publish", *extra)
+    return rc, j, err
+
+
+def case_conjunction(b, c):
+    cdm = write_cdm(b, "day.cdm", 86400)
+    b.start_node()
+    p = subprocess.run([b.evade, "conjunction", "--cdm", cdm, "--hbr-m", "20", "--json"],
+                       capture_output=True, text=True, timeout=60)
+    event = json.loads(p.stdout)["event"]
+    c.check("without --publish: the event printed, exit 0", p.returncode == 0 and
+            event["event_id"] > 0 and event["version"] > 0, (p.returncode, p.stderr))
+    rc, u, _ = conjunction(b, cdm)
+    c.check("tracked: exit 0 accepted", rc == 0 and u.get("reason") == "accepted"
+            and u.get("detail") == 0, (rc, u))
+    rc, u, _ = conjunction(b, cdm)
+    c.check("the same event again: exit 0 already in force (CONJ_ALREADY_TRACKED)",
+            rc == 0 and u.get("reason") == "already in force" and u.get("detail") == 10, (rc, u))
+    v = event["version"]
+    rc, u, _ = conjunction(b, cdm, "--event-version", str(v + 1))
+    c.check("a higher version: exit 0, replaced", rc == 0 and u.get("detail") == 1, (rc, u))
+    rc, u, _ = conjunction(b, cdm)
+    c.check("the lower version: exit 3 not_newer", rc == 3 and u.get("reason") == "not_newer",
+            (rc, u))
+    rc, u, err = conjunction(b, write_cdm(b, "past.cdm", -60))
+    c.check("TCA in the past: exit 2 naming it, nothing sent",
+            rc == 2 and "tca_not_ahead" in err and u == {}, (rc, err))
+    rc, u, err = conjunction(b, cdm, "--pc-target", "1e-3")
+    c.check("--pc-target above --pc-red: exit 2 naming both",
+            rc == 2 and "--pc-target" in err and "--pc-red" in err, (rc, err))
+    s = b.stop_node()
+    a = s.get("autonomy", {})
+    c.check("the node tracked 1, replaced 1, again 1, refused 1",
+            (a.get("events_tracked"), a.get("events_replaced"), a.get("events_again"),
+             a.get("events_refused")) == (1, 1, 1, 1), a)
+    c.check("identity", s.get("inputs", {}).get("identity") is True, s.get("inputs"))
+
+
+def case_cam_decide(b, c):
+    cdm = write_cdm(b, "day.cdm", 86400)
+    b.start_node()
+    rc, u, _ = conjunction(b, cdm)
+    p = subprocess.run([b.evade, "conjunction", "--cdm", cdm, "--hbr-m", "20", "--json"],
+                       capture_output=True, text=True, timeout=60)
+    event = str(json.loads(p.stdout)["event"]["event_id"])
+    c.check("tracked", rc == 0, (rc, u))
+    rc, u, _ = b.ground("cam", "decide", "--event", event, "--veto", timeout_s="4")
+    c.check("no navigation, no proposal: exit 3 no_proposal, nothing sent",
+            rc == 3 and u.get("reason") == "no_proposal" and u.get("transmissions") == 0
+            and "no_nav" in u.get("note", ""), (rc, u))
+    rc, u, _ = b.ground("cam", "decide", "--event", event, "--veto", "--proposal", "5")
+    c.check("a named proposal: exit 3 not_pending", rc == 3 and u.get("reason") == "not_pending",
+            (rc, u))
+    rc, u, _ = b.ground("cam", "decide", "--event", "999", "--veto", "--proposal", "5")
+    c.check("an unknown event: exit 3 unknown_event",
+            rc == 3 and u.get("reason") == "unknown_event", (rc, u))
+    rc, u, _ = b.ground("cam", "decide", "--autonomy", "off")
+    c.check("--autonomy off: exit 0", rc == 0 and u.get("reason") == "accepted", (rc, u))
+    rc, u, err = b.ground("cam", "decide", "--veto")
+    c.check("--veto without --event: exit 2", rc == 2 and "--event" in err, (rc, err))
+    s = b.stop_node()
+    a = s.get("autonomy", {})
+    c.check("the node's policy is off, 1 decision applied and 2 refused",
+            (a.get("policy"), a.get("decisions_applied"), a.get("decisions_refused")) ==
+            ("off", 1, 2), a)
+    c.check("identity", s.get("inputs", {}).get("identity") is True, s.get("inputs"))
+
+
 def case_node_start(b, c):
     state = b.path("start.state")
     base = [b.node_bin, "--lcm-url", "memq://", "--max-cycles", "1", "--auth-state", state,
@@ -239,6 +335,7 @@ def case_node_start(b, c):
 CASES = {"auto_plan_id": case_auto_plan_id, "refused_plans": case_refused_plans,
          "standby_arm": case_standby_arm, "forged_telemetry": case_forged_telemetry,
          "skewed_clock": case_skewed_clock, "lost_counter": case_lost_counter,
+         "conjunction": case_conjunction, "cam_decide": case_cam_decide,
          "node_start": case_node_start}
 
 

@@ -18,6 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "evade/auth/keyring.hpp"
+#include "evade/autonomy/conjunction_event.hpp"
+#include "evade/autonomy/responder.hpp"
 #include "evade/core/burn_plan.hpp"
 #include "evade/guidance_lcm/signed_encode.hpp"
 #include "evade/lcm_link/burn_plan_publisher.hpp"
@@ -54,6 +56,7 @@ struct UplinkOptions {
   std::string lcm_url;                  ///< empty: LCM_DEFAULT_URL or LCM's default
   std::string status_channel = "EVADE_GUID_STATUS";
   std::string ack_channel = "EVADE_CMD_ACK";
+  std::string proposal_channel = "EVADE_CAM_PROPOSAL";  ///< the node's signed conjunction decisions
   double timeout_s = 5.0;               ///< give up after this long without an acknowledgement
   double retransmit_s = 0.25;           ///< send again after this long without one
 };
@@ -65,13 +68,14 @@ enum class AckOutcome : std::uint8_t { kAccepted = 0, kRejected = 1, kTimeout = 
 struct UplinkResult {
   AckOutcome outcome = AckOutcome::kTimeout;
   int code = 0;              ///< the node's REASON_* (evade_cmd_ack_t); 0 accepted
-  int detail = 0;            ///< plans: PLAN_REJECT_*; key commands: KEY_CMD_*
+  int detail = 0;            ///< plans: PLAN_REJECT_*; key commands: KEY_CMD_*; CONJ_*, DECIDE_*
   std::string reason;        ///< "accepted", "already in force", "burn_in_past", "replayed_arsn", ...
   std::string note;          ///< what to do about it, when there is something ("" otherwise)
   int transmissions = 0;     ///< messages sent
   double ack_s = 0.0;        ///< from the first transmission to the acknowledgement [s]
   std::int64_t first_utime = 0;  ///< utime of the first transmission [us]
   std::int64_t plan_id = 0;  ///< plans: the id sent; the ack's plan in force for the others
+  std::int64_t proposal_id = 0;  ///< decisions: the node's proposal the decision names (0: none)
   std::int64_t arsn = 0;     ///< the ARSN of the transmission the node answered (0: none)
   std::int64_t node_arsn = 0;  ///< the node's last accepted ARSN of the key, from its answer
   int arsn_recoveries = 0;   ///< times the counter was raised above the node's and resent
@@ -103,5 +107,19 @@ UplinkResult uplink_arm(const UplinkOptions& o, bool armed, const GroundKeys& ke
 /// the node answers it.
 UplinkResult uplink_key_cmd(const UplinkOptions& o, std::int8_t op, std::int32_t target_key_id,
                             const GroundKeys& keys, ArsnSource* arsn);
+
+/// Sends the conjunction e as evade_conjunction_t on EVADE_CONJUNCTION until the node answers
+/// it (docs/AUTONOMY.md AUT-1): "accepted" when tracked or replacing an older version, "already
+/// in force" for the very event tracked, else the CONJ_* reason ("not_newer", "table_full", ...).
+UplinkResult uplink_conjunction(const UplinkOptions& o, const autonomy::ConjunctionEvent& e,
+                                const GroundKeys& keys, ArsnSource* arsn);
+
+/// Sends the decision d as evade_cam_decision_t on EVADE_CAM_DECISION until the node answers it
+/// (AUT-7). A veto or an approval with proposal_id 0 names the proposal of the node's newest
+/// verified evade_cam_proposal_t of the event, waited for within the timeout; when none comes,
+/// or it proposes nothing, nothing is sent and the result says why (outcome kTimeout, reason
+/// "no verified proposal", or kRejected "no_proposal" with the node's state in the note).
+UplinkResult uplink_cam_decision(const UplinkOptions& o, autonomy::DecisionCommand d,
+                                 const GroundKeys& keys, ArsnSource* arsn);
 
 }  // namespace evade::lcm_link

@@ -4,7 +4,8 @@
 // signs both, auth::channel_mac), the key id of the trailer, then an exact decode. What fails is
 // counted (ignored) and never looked at: a peer on the bus cannot make the ground believe a
 // command was accepted or refused. Verified acknowledgements are kept in arrival order (at most
-// kMaxAcks between two looks; the rest are counted ignored), the newest verified status is kept.
+// kMaxAcks between two looks; the rest are counted ignored), the newest verified status is kept,
+// and the newest verified proposal of the conjunction the ground asks about (proposal_event).
 // The callbacks run inside LCM's C dispatch: nothing in them throws.
 #pragma once
 
@@ -14,6 +15,7 @@
 
 #include <lcm/lcm.h>
 
+#include "evade/evade_cam_proposal_t.hpp"
 #include "evade/evade_cmd_ack_t.hpp"
 #include "evade/evade_guidance_status_t.hpp"
 #include "evade/guidance_lcm/signed_encode.hpp"
@@ -32,12 +34,17 @@ struct TelemetryWatch {
   std::size_t n_acks = 0;          ///< verified acknowledgements not yet taken
   evade_guidance_status_t status{};
   bool have_status = false;        ///< a verified status arrived since the last take
+  std::int64_t proposal_event = 0;  ///< the event whose proposals are kept (0: none)
+  evade_cam_proposal_t proposal{};
+  bool have_proposal = false;      ///< a verified proposal of proposal_event arrived since the last take
   int acks_verified = 0;
   int status_verified = 0;
+  int proposals_verified = 0;
   int ignored = 0;
 
   static void on_ack(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
   static void on_status(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
+  static void on_proposal(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept;
 };
 
 }  // namespace evade::lcm_link
