@@ -30,7 +30,9 @@ CASE (one ctest each):
   cam_decide         AUT-7: `evade cam decide` on an event without a proposal (the node has no
                      navigation): `no_proposal` from the node's signed proposal (exit 3, nothing
                      sent), a named proposal refused `not_pending` (exit 3); --autonomy off
-                     accepted; the node's stats count each
+                     accepted; the node's stats count each; `evade cam review --event` reads
+                     the node's signed proposal from the bus (no burn in it: exit 2) and
+                     ignores it under another telemetry key (exit 4)
   node_start         row 5: the node refuses to start (exit 2, one line naming the file) from a
                      deleted, cut or edited state file or one with mode 0666; --auth-init
                      refuses to overwrite one
@@ -49,6 +51,8 @@ import tempfile
 import time
 
 URL = "udpm://239.255.76.67:7667?ttl=0"
+CATALOG = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenarios",
+                       "catalogs", "synthetic-1200.tle")
 NETNS = "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo"
 
 
@@ -69,6 +73,7 @@ class Bench:
         self.evade, self.node_bin, self.attacker, self.d = evade, node, attacker, d
         self.node = None
         for name, kid, role in (("ground", 1, "command"), ("telemetry", 3, "telemetry"),
+                                ("telemetry2", 6, "telemetry"),
                                 ("standby", 4, "command"), ("other", 5, "command")):
             subprocess.run([evade, "keygen", "--out", self.path(name + ".key"), "--key-id",
                             str(kid), "--role", role], check=True, stdout=subprocess.DEVNULL)
@@ -287,6 +292,14 @@ def case_cam_decide(b, c):
     c.check("--autonomy off: exit 0", rc == 0 and u.get("reason") == "accepted", (rc, u))
     rc, u, err = b.ground("cam", "decide", "--veto")
     c.check("--veto without --event: exit 2", rc == 2 and "--event" in err, (rc, err))
+    review = [b.evade, "cam", "review", "--cdm", cdm, "--hbr-m", "20", "--tle", CATALOG,
+              "--event", event, "--lcm-url", URL, "--wait-s", "3", "--telemetry-key"]
+    p = subprocess.run(review + [b.path("telemetry.key")], capture_output=True, text=True, timeout=60)
+    c.check("cam review from the bus: the node's signed proposal read, no burn in it: exit 2",
+            p.returncode == 2 and "no burn" in p.stderr, (p.returncode, p.stderr))
+    p = subprocess.run(review + [b.path("telemetry2.key")], capture_output=True, text=True, timeout=60)
+    c.check("cam review under another telemetry key: nothing verified, exit 4",
+            p.returncode == 4 and "ignored" in p.stderr, (p.returncode, p.stderr))
     s = b.stop_node()
     a = s.get("autonomy", {})
     c.check("the node's policy is off, 1 decision applied and 2 refused",
