@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """scripts/stack_check against call graphs GCC writes for small programs made to break it
 (docs/GUIDANCE_NODE.md NODE-RT-6): an alloca on the path of GuidanceLaw::step, recursion, a
-frame over the budget, the same code clean, and a tree without call graphs.
+frame over the budget, the same code clean, an alloca on the planning worker's path (reported
+OPEN, not failed: that entry is measured, not yet enforced), and a tree without call graphs.
   stack_check_test.py SOURCE_DIR WORK_DIR CXX
 Exit 0 when every case gives the expected verdict, 1 otherwise."""
 import os
@@ -15,6 +16,9 @@ ENTRIES = r"""
 #include <cstring>
 namespace evade { namespace guidance { struct GuidanceLaw { int step(int n); }; } }
 namespace evade { namespace auth { struct KeyRing { int verify(int n); }; } }
+namespace evade { namespace autonomy { int assess_event(int n); } }
+int worker_callee(int n);
+int evade::autonomy::assess_event(int n) { return worker_callee(n); }
 namespace evade { namespace guidance_lcm { namespace internal { struct NodeCore {
   int run_cycle(int n); int drain(); static void on_message(const void*, const char*, void*); }; } } }
 int callee(int n);
@@ -24,15 +28,20 @@ int evade::guidance_lcm::internal::NodeCore::run_cycle(int n) { return n; }
 int evade::guidance_lcm::internal::NodeCore::drain() { return 0; }
 void evade::guidance_lcm::internal::NodeCore::on_message(const void*, const char*, void*) {}
 """
+CLEAN_WORKER = "int worker_callee(int n) { return n + 2; }\n"
 CASES = {
-    "clean": ("int callee(int n) { volatile char b[64]; b[0] = (char)n; return b[0]; }", 0,
-              "0 unbounded frames on the real-time paths"),
+    "clean": ("int callee(int n) { volatile char b[64]; b[0] = (char)n; return b[0]; }\n" +
+              CLEAN_WORKER, 0, "0 unbounded frames on the real-time paths"),
+    "alloca_on_worker": ("int callee(int n) { return n; }\n"
+                         "int worker_callee(int n) { char* p = (char*)__builtin_alloca((std::size_t)n);"
+                         " std::memset(p, 1, (std::size_t)n); return p[n / 2]; }", 0,
+                         "OPEN: unbounded frame on an open path"),
     "alloca_on_step": ("int callee(int n) { char* p = (char*)__builtin_alloca((std::size_t)n);"
-                       " std::memset(p, 1, (std::size_t)n); return p[n / 2]; }", 1,
+                       " std::memset(p, 1, (std::size_t)n); return p[n / 2]; }" + "\n" + CLEAN_WORKER, 1,
                        "unbounded frame on a real-time path"),
-    "recursion": ("int callee(int n) { return n <= 0 ? 0 : 1 + callee(n - 1) + callee(n - 2); }",
+    "recursion": ("int callee(int n) { return n <= 0 ? 0 : 1 + callee(n - 1) + callee(n - 2); }" + "\n" + CLEAN_WORKER,
                   1, "recursion through"),
-    "over_budget": ("int callee(int n) { volatile char b[20000]; b[n] = 1; return b[n / 2]; }", 1,
+    "over_budget": ("int callee(int n) { volatile char b[20000]; b[n] = 1; return b[n / 2]; }" + "\n" + CLEAN_WORKER, 1,
                     "over its budget"),
 }
 
