@@ -5,21 +5,30 @@
 # figure that transfers; wall time on this machine does not).
 #   bench/count_instructions.sh [BUILD_DIR]     (default: build; needs bench/guidance_bench)
 # Prints: "instructions_per_step <N> over <calls> calls".
+# Another function of another benchmark the same way (the onboard conjunction response's
+# decision, docs/PERFORMANCE.md):
+#   EVADE_COUNT_BENCH=autonomy_bench EVADE_COUNT_FILTER=BM_AssessEventProposesABurn \
+#   EVADE_COUNT_FUNCTION='evade::autonomy::assess_event(' EVADE_COUNT_LABEL=instructions_per_decision \
+#   bench/count_instructions.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
-exe=$build/bench/guidance_bench
-[ -x "$exe" ] || { echo "count_instructions: $exe not built (cmake --build $build --target guidance_bench)" >&2; exit 2; }
+bench=${EVADE_COUNT_BENCH:-guidance_bench}
+filter=${EVADE_COUNT_FILTER:-BM_GuidanceStep}
+export EVADE_COUNT_FUNCTION=${EVADE_COUNT_FUNCTION:-'evade::guidance::GuidanceLaw::step('}
+export EVADE_COUNT_LABEL=${EVADE_COUNT_LABEL:-instructions_per_step}
+exe=$build/bench/$bench
+[ -x "$exe" ] || { echo "count_instructions: $exe not built (cmake --build $build --target $bench)" >&2; exit 2; }
 command -v valgrind >/dev/null || { echo "count_instructions: valgrind not installed (apt-get install valgrind)" >&2; exit 2; }
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 valgrind --tool=callgrind --callgrind-out-file="$out" --collect-atstart=no \
-  --toggle-collect='*BM_GuidanceStep*' "$exe" --benchmark_filter='BM_GuidanceStep$' \
+  --toggle-collect="*$filter*" "$exe" --benchmark_filter="$filter\$" \
   --benchmark_min_time=0.2 >/dev/null 2>&1
 python3 - "$out" <<'PY'
-import re, sys
+import os, re, sys
 names, calls, ir = {}, 0, 0
-want = "evade::guidance::GuidanceLaw::step("
+want = os.environ["EVADE_COUNT_FUNCTION"]
 pending = None
 with open(sys.argv[1]) as f:
     lines = f.read().splitlines()
@@ -41,6 +50,6 @@ while i < len(lines):
         if m and m.group(2): names[m.group(1)] = m.group(2)
     i += 1
 if calls == 0:
-    sys.exit("count_instructions: no call of GuidanceLaw::step recorded")
-print(f"instructions_per_step {ir / calls:.0f} over {calls} calls")
+    sys.exit(f"count_instructions: no call of {want} recorded")
+print(f"{os.environ['EVADE_COUNT_LABEL']} {ir / calls:.0f} over {calls} calls")
 PY
