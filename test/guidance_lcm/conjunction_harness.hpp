@@ -144,9 +144,16 @@ class ProposalRecorder {
   int unverified_ = 0;
 };
 
+/// The node with policy p. Its burn search looks at 2 candidate times of the window instead of
+/// 8 (node.autonomy.cam.burn_times): these tests prove the node's handling of the response
+/// (authority, accounting, the burn flown or withdrawn), not the search's thoroughness, which
+/// test/autonomy proves with the defaults (OnboardCam.*, Response.*); the assessment is most of
+/// their time, a quarter of it so, under qemu in the cross stage. The allocation test
+/// (alloc_test.cpp) keeps the defaults.
 inline NodeConfig config(autonomy::Policy p = autonomy::Policy::kVeto) {
   NodeConfig c;
   c.autonomy = p;
+  c.response.cam.burn_times = 2;
   return c;
 }
 
