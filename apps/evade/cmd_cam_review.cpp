@@ -66,12 +66,11 @@ int run(const Options& o) {
   if (rc != 0) return rc;
   const std::string name = o.proposal_file.empty() ? "the node's proposal" : o.proposal_file;
   const evade::commands::CamReviewProposal p = evade::commands::cam_review_proposal_from_json(pj, name);
-  const evade::commands::CamReviewRequest req = evade::commands::read_cam_review_request(
+  evade::commands::CamReviewRequest req = evade::commands::read_cam_review_request(
       evade::cli::read_text_file(o.cdm, "--cdm"), o.cdm, o.hbr_m, p,
       evade::cli::read_catalog_file(o.tle, o.omm), o.tle.empty() ? o.omm : o.tle, o.params);
-  evade::commands::CamReviewRequest run_req = req;
-  run_req.threads = o.threads;
-  const evade::commands::CamReviewResult r = evade::commands::run_cam_review(run_req);
+  req.threads = o.threads;
+  const evade::commands::CamReviewResult r = evade::commands::run_cam_review(req);
   if (o.json) evade::cli::print_json(evade::commands::to_json(r));
   else (void)std::fputs(evade::commands::to_text(r).c_str(), stdout);
   return 0;
