@@ -18,7 +18,7 @@ UplinkResult uplink_conjunction(const UplinkOptions& o, const autonomy::Conjunct
   UplinkSession up(o, keys, arsn);
   evade_conjunction_t m{};
   // utime: the node refuses a conjunction stamped in its future (its clock is the reference).
-  guidance_lcm::to_lcm(e, uplink_realtime_us(), arsn->last() + 1, &m);
+  guidance_lcm::to_lcm(e, uplink_utime(o), arsn->last() + 1, &m);
   return up.run(guidance_lcm::kChanConjunction, m);
 }
 
@@ -63,7 +63,7 @@ UplinkResult uplink_cam_decision(const UplinkOptions& o, autonomy::DecisionComma
     if (!find_proposal(&up, d.event_id, &d.proposal_id, &r)) return r;
   }
   evade_cam_decision_t m{};
-  guidance_lcm::to_lcm(d, uplink_realtime_us(), arsn->last() + 1, &m);
+  guidance_lcm::to_lcm(d, uplink_utime(o), arsn->last() + 1, &m);
   UplinkResult r = up.run(guidance_lcm::kChanCamDecision, m);
   r.proposal_id = d.proposal_id;
   return r;

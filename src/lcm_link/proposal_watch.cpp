@@ -3,8 +3,13 @@
 #include "evade/lcm_link/proposal_watch.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
+#include <tuple>
 
 #include <lcm/lcm.h>
 
@@ -69,6 +74,88 @@ ProposalWatchResult watch_proposal(const std::string& lcm_url, const std::string
   r.ignored = watch->ignored;
   if (watch->have_proposal) r.proposal = proposal_json(watch->proposal);
   return r;
+}
+
+struct ProposalRecorder::Impl {
+  using Key = std::tuple<std::int32_t, std::int64_t, std::int8_t, std::int16_t>;
+  guidance_lcm::SigningKey key;
+  struct Close {
+    void operator()(lcm_t* l) const { lcm_destroy(l); }
+  };
+  std::unique_ptr<lcm_t, Close> lcm;
+  mutable std::mutex mu;
+  std::vector<Change> changes;
+  std::map<std::int64_t, Key> last;  // per event: version, proposal, state, reason
+  int verified = 0, ignored = 0, dropped = 0;
+  std::atomic<bool> stop{false};
+  std::thread thread;
+
+  // Inside LCM's C dispatch: nothing here throws but the allocation of a change (bounded).
+  static void on_message(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept {
+    auto* self = static_cast<Impl*>(user);
+    const auto* data = static_cast<const std::uint8_t*>(rbuf->data);
+    evade_cam_proposal_t m{};
+    const bool ok = telemetry_authentic(self->key, channel, data, rbuf->data_size) &&
+                    m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) ==
+                        static_cast<int>(rbuf->data_size);
+    std::lock_guard<std::mutex> lock(self->mu);
+    if (!ok) {
+      ++self->ignored;
+      return;
+    }
+    ++self->verified;
+    const Key k{m.version, m.proposal_id, m.state, m.reason};
+    const auto it = self->last.find(m.event_id);
+    if (it != self->last.end() && it->second == k) return;
+    if (self->changes.size() >= kMaxChanges) {
+      ++self->dropped;
+      return;
+    }
+    try {
+      self->changes.push_back({m.utime, proposal_json(m)});
+      self->last[m.event_id] = k;
+    } catch (...) {
+      ++self->dropped;
+    }
+  }
+  void run() const noexcept {
+    // Bounded per pass (100 ms); ends when the recorder is destroyed or LCM fails.
+    while (!stop.load())
+      if (lcm_handle_timeout(lcm.get(), 100) < 0) break;
+  }
+};
+
+ProposalRecorder::ProposalRecorder(const std::string& lcm_url, const std::string& channel,
+                                   const guidance_lcm::SigningKey& telemetry)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->key = telemetry;
+  impl_->lcm.reset(lcm_create(lcm_url.empty() ? nullptr : lcm_url.c_str()));
+  if (impl_->lcm == nullptr) throw std::runtime_error("LCM initialization failed for url '" + lcm_url + "'");
+  if (lcm_subscribe(impl_->lcm.get(), channel.c_str(), &Impl::on_message, impl_.get()) == nullptr)
+    throw std::runtime_error("cannot subscribe to " + channel);
+  impl_->thread = std::thread([this] { impl_->run(); });
+}
+
+ProposalRecorder::~ProposalRecorder() {
+  impl_->stop.store(true);
+  impl_->thread.join();
+}
+
+std::vector<ProposalRecorder::Change> ProposalRecorder::changes() const {
+  std::lock_guard<std::mutex> lock(impl_->mu);
+  return impl_->changes;
+}
+int ProposalRecorder::verified() const {
+  std::lock_guard<std::mutex> lock(impl_->mu);
+  return impl_->verified;
+}
+int ProposalRecorder::ignored() const {
+  std::lock_guard<std::mutex> lock(impl_->mu);
+  return impl_->ignored;
+}
+int ProposalRecorder::dropped() const {
+  std::lock_guard<std::mutex> lock(impl_->mu);
+  return impl_->dropped;
 }
 
 }  // namespace evade::lcm_link

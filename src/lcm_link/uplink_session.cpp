@@ -57,6 +57,10 @@ std::int64_t uplink_realtime_us() {
   return static_cast<std::int64_t>(ts.tv_sec) * 1000000 + ts.tv_nsec / 1000;
 }
 
+std::int64_t uplink_utime(const UplinkOptions& o) {
+  return o.clock_utime ? o.clock_utime() : uplink_realtime_us();
+}
+
 std::string refusal_name(const Ack& a) {
   if (a.detail != 0 && a.command == Ack::COMMAND_PLAN)
     return lower(guidance::plan_reject_name(static_cast<guidance::PlanReject>(a.detail)));

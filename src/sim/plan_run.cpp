@@ -23,6 +23,7 @@ void check(const PlanRunConfig& cfg) {
     throw std::invalid_argument("plan run: rate_hz must be in (0, 1000]");
   if (!(cfg.duration_s > 0.0 && cfg.duration_s <= 1e7))
     throw std::invalid_argument("plan run: duration_s must be in (0, 1e7]");
+  if (cfg.utime0_us <= 0) throw std::invalid_argument("plan run: utime0_us must be > 0");
   cfg.integrator.validate();
   for (std::size_t i = 0; i < cfg.sample_t_s.size(); ++i) {
     const double t = cfg.sample_t_s[i];
@@ -48,7 +49,7 @@ class PlanLoop {
     const long n =
         static_cast<long>(std::llround(cfg_.duration_s * 1e6 / static_cast<double>(cycle_us_)));
     for (long k = 0; k < n; ++k) {
-      const std::int64_t utime = kPlanRunUtime0 + k * cycle_us_;
+      const std::int64_t utime = cfg_.utime0_us + k * cycle_us_;
       if (hook) hook(k, utime);
       record(1e-6 * static_cast<double>(k * cycle_us_));
       exchange(utime);
@@ -80,7 +81,7 @@ class PlanLoop {
     nav.v_eci_mps = x_.segment<3>(3);
     nav.valid = true;
     a_ = actuator_.accel_eci_mps2(g_.exchange(utime, nav, nullptr));
-    const double t = 1e-6 * static_cast<double>(utime - kPlanRunUtime0);
+    const double t = 1e-6 * static_cast<double>(utime - cfg_.utime0_us);
     if (a_.norm() > 0.0) {
       if (!burning_) {
         burning_ = true;

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -59,6 +60,10 @@ struct UplinkOptions {
   std::string proposal_channel = "EVADE_CAM_PROPOSAL";  ///< the node's signed conjunction decisions
   double timeout_s = 5.0;               ///< give up after this long without an acknowledgement
   double retransmit_s = 0.25;           ///< send again after this long without one
+  /// The node's time base for the utime the command is stamped with (a conjunction is refused
+  /// when stamped in the node's future); empty: CLOCK_REALTIME, the node's clock in flight. A
+  /// lockstep run gives the simulator's tick time (`evade cam hil`).
+  std::function<std::int64_t()> clock_utime;
 };
 
 inline constexpr int kMaxArsnRecoveries = 3;

@@ -6,8 +6,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -28,5 +30,32 @@ struct ProposalWatchResult {
 ProposalWatchResult watch_proposal(const std::string& lcm_url, const std::string& channel,
                                    const guidance_lcm::SigningKey& telemetry, std::int64_t event_id,
                                    double timeout_s);
+
+/// Records the node's verified proposals on channel from construction to destruction, on a
+/// thread of its own (its own LCM instance): every one whose version, proposal, state or
+/// reason differs from the last one recorded of its event, in arrival order (at most
+/// kMaxChanges; the rest are counted). The ground's timeline of a run (`evade cam hil`).
+class ProposalRecorder {
+ public:
+  static constexpr std::size_t kMaxChanges = 4096;
+  struct Change {
+    std::int64_t utime = 0;  ///< the proposal's utime (the node's cycle time) [us]
+    nlohmann::json proposal;  ///< as watch_proposal gives it
+  };
+  /// Throws std::runtime_error when LCM cannot start or subscribe.
+  ProposalRecorder(const std::string& lcm_url, const std::string& channel,
+                   const guidance_lcm::SigningKey& telemetry);
+  ~ProposalRecorder();
+  ProposalRecorder(const ProposalRecorder&) = delete;
+  ProposalRecorder& operator=(const ProposalRecorder&) = delete;
+  std::vector<Change> changes() const;
+  int verified() const;
+  int ignored() const;  ///< unsigned, another key, a bad MAC, undecodable
+  int dropped() const;  ///< changes beyond kMaxChanges
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace evade::lcm_link

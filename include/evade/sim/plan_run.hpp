@@ -4,7 +4,8 @@
 // applied through the actuator model as a zero-order hold. The guidance behind the endpoint
 // (the node over LCM, or the in-process law + plan executor) flies the plan; this records
 // every burn as the actuator delivered it. Times are seconds from the run's epoch (t = 0),
-// whose utime is kPlanRunUtime0.
+// whose utime is PlanRunConfig::utime0_us (kPlanRunUtime0 unless a run sets its own, e.g. a
+// calendar time for a run that the ground's CDMs date).
 #pragma once
 
 #include <cstdint>
@@ -28,6 +29,7 @@ struct PlanRunConfig {
   GravityModel gravity = GravityModel::kTwoBody;
   EarthModel earth = kEarthDefault;
   double rate_hz = 50.0;       ///< guidance exchange rate
+  std::int64_t utime0_us = kPlanRunUtime0;  ///< utime of t = 0 [us] (> 0)
   double duration_s = 100.0;   ///< run length
   ActuatorConfig actuator;
   AdaptiveOptions integrator = AdaptiveOptions::tight();

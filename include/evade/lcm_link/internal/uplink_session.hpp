@@ -26,6 +26,8 @@ namespace evade::lcm_link {
 
 double uplink_mono_s();
 std::int64_t uplink_realtime_us();
+/// The utime a command is stamped with: o.clock_utime() when given, else CLOCK_REALTIME.
+std::int64_t uplink_utime(const UplinkOptions& o);
 
 /// The name of a refusal: the detail when there is one (the plan's, the key command's, the
 /// conjunction's or the decision's own reason), else the node's input reason.
@@ -82,7 +84,7 @@ class UplinkSession {
     std::copy(buf.end() - static_cast<long>(auth::kMacBytes), buf.end(), s.mac.begin());
     sent_.push_back(s);
     publish(channel, buf.data(), n);
-    if (r->transmissions == 0) r->first_utime = uplink_realtime_us();
+    if (r->transmissions == 0) r->first_utime = uplink_utime(o_);
     ++r->transmissions;
   }
   void publish(const char* channel, const std::uint8_t* data, int n);
