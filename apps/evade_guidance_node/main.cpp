@@ -228,7 +228,10 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
                    {"decisions_refused", ac.decisions_refused},
                    {"proposals", ac.proposals},
                    {"burns_loaded", ac.schedules},
-                   {"burns_cancelled", ac.cancels}};
+                   {"burns_cancelled", ac.cancels},
+                   {"planning_jobs", ac.jobs},
+                   {"planning_us_last", n.last_planning_us()},
+                   {"planning_us_max", n.max_planning_us()}};
   j["exit_reason"] = res.why;
   return j;
 }

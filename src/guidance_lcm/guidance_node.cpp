@@ -59,6 +59,7 @@ const autonomy::Responder& GuidanceNode::responder() const noexcept { return cor
 bool GuidanceNode::plan_once() noexcept { return core_->plan_once(); }
 bool GuidanceNode::planning_busy() const noexcept { return core_->planning_busy(); }
 double GuidanceNode::last_planning_us() const noexcept { return core_->last_planning_us(); }
+double GuidanceNode::max_planning_us() const noexcept { return core_->max_planning_us(); }
 std::int64_t GuidanceNode::proposals_published() const noexcept {
   return core_->proposals_published();
 }

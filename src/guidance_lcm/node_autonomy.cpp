@@ -6,6 +6,8 @@
 // burn, or withdraw it), and the signed proposals (evade_cam_proposal_t). The burn is flown by
 // the plan executor like an uplinked plan, so close-range evasion (paper 000) still pre-empts
 // it. Members of NodeCore (internal/node_core.hpp).
+#include <algorithm>
+
 #include "evade/guidance_lcm/autonomy_convert.hpp"
 #include "evade/guidance_lcm/internal/node_core.hpp"
 
@@ -42,6 +44,7 @@ void NodeCore::execute_decision(CommandInbox::Slot& s, std::int64_t now_us) noex
 void NodeCore::step_autonomy(std::int64_t now_us) noexcept {
   if (planner_.take_result(&job_back_, &assessment_back_)) {
     last_planning_us_ = planner_.last_work_us();
+    max_planning_us_ = std::max(max_planning_us_, last_planning_us_);
     (void)responder_.complete(job_back_, assessment_back_, now_us);  // stale: counted there
   }
   hand_out_job(now_us);

@@ -105,6 +105,8 @@ class GuidanceNode {
   bool planning_busy() const noexcept;
   /// The worker's compute time of the last job collected [us].
   double last_planning_us() const noexcept;
+  /// The longest of the worker's jobs collected so far [us].
+  double max_planning_us() const noexcept;
   /// Proposals published (evade_cam_proposal_t on EVADE_CAM_PROPOSAL).
   std::int64_t proposals_published() const noexcept;
 

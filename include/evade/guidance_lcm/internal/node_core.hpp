@@ -100,6 +100,7 @@ class NodeCore {
   bool plan_once() noexcept { return planner_.work(); }
   bool planning_busy() const noexcept { return planner_.busy(); }
   double last_planning_us() const noexcept { return last_planning_us_; }
+  double max_planning_us() const noexcept { return max_planning_us_; }
   std::int64_t proposals_published() const noexcept { return proposal_seq_; }
 
  private:
@@ -223,6 +224,7 @@ class NodeCore {
   guidance::UplinkedPlan onboard_plan_{};
   std::int64_t onboard_plan_id_ = 0;
   double last_planning_us_ = 0.0;
+  double max_planning_us_ = 0.0;  // the longest job so far [us]
   std::int64_t proposal_period_cycles_ = 1;  ///< once a second: guidance.rate_hz cycles
   std::int64_t proposal_seq_ = 0;
   evade_cam_proposal_t proposal_msg_{};
