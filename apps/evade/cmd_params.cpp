@@ -12,6 +12,7 @@
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
 #include "evade/commands/conjunction_uplink_command.hpp"
+#include "evade/hil/conjunction_hil.hpp"
 #include "evade/commands/screen_scenario.hpp"
 #include "evade/core/earth_params.hpp"
 #include "evade/commands/propagate_command.hpp"
@@ -83,6 +84,7 @@ std::string formation_to_cam_sections() {
                 cam::cam_params());
   md += section("Conjunction uplink (onboard response)", "`evade conjunction`", "uplink.",
                 commands::conjunction_uplink_params());
+  md += section("Conjunction HIL case", "`evade cam hil`", "hil.", hil::conjunction_hil_params());
   return md;
 }
 
