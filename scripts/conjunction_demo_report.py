@@ -7,7 +7,8 @@ from OUT/<run>.json (`evade cam hil`) and OUT/node_<run>.json (the node's --stat
 Per run: outcome (burned / vetoed / no burn), the truth's miss and 2D Pc at the new TCA beside
 the red threshold and the target, the onboard Pc before and after the burn and its predicted
 miss, the delivered delta-v and when, the decision latency on the simulator's clock and the
-node's planning worker on the wall clock, the node's cycle compute p50/p99/max, overruns, and
+node's planning worker on the wall clock, the node's cycle compute p50/p99/max, overruns (a
+lockstep cycle has none: no deadline) and the cycles whose compute exceeded the period, and
 whether its input accounting holds (received = consumed + rejected + stale + superseded +
 dropped + auth_failed + replayed)."""
 import json
@@ -47,6 +48,7 @@ def summary(out, run):
         "cycles": node["cycles"],
         "cycle_compute_us": node["compute_us"],
         "overruns": node["overruns"],
+        "cycles_over_period": node["cycles_over_period"],
         "inputs_identity_holds": identity,
         "autonomy": node["autonomy"],
         "wall_s": h["wall_s"],

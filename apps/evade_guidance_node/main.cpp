@@ -194,6 +194,7 @@ nlohmann::json stats_json(const evade::guidance_lcm::GuidanceNode& n, bool locks
   j["rate_hz"] = n.config().guidance.rate_hz;
   j["cycles"] = n.cycles();
   j["overruns"] = cs.overruns();
+  if (lockstep) j["cycles_over_period"] = res.over_period;  // no deadline there: not overruns
   j["inputs"] = inputs_json(n);
   j["watchdog_cycles"] = n.watchdog_cycles();
   j["compute_us"] = {{"p50_last_1024", cs.quantile(0.5)},
@@ -269,7 +270,7 @@ int run_node(const evade::node::NodeOptions& opts, const evade::guidance_lcm::No
   lim.progress = !opts.quiet;
   lim.input_is_log = opts.lcm_url.rfind("file://", 0) == 0;
   const node::LoopResult res =
-      opts.lockstep ? node::run_lockstep(nodecore, lim, &g_stop)
+      opts.lockstep ? node::run_lockstep(nodecore, cfg.guidance.rate_hz, lim, &g_stop)
                     : node::run_fixed_rate(nodecore, cfg.guidance.rate_hz, lim, &g_stop);
   nodecore.stop();  // what is still queued is counted (NODE-IN-1) before the report
   if (!opts.quiet) print_summary(nodecore, res.why);

@@ -149,9 +149,10 @@ LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, cons
   return res;
 }
 
-LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, const LoopLimits& lim,
+LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, double rate_hz, const LoopLimits& lim,
                         const volatile std::sig_atomic_t* stop) {
   LoopResult res;
+  const std::int64_t period_ns = std::llround(1e9 / rate_hz);
   std::int64_t last_tick = now_ns(CLOCK_MONOTONIC);
   std::int64_t next_progress = last_tick + 10 * kNsPerS;
   while (*stop == 0) {
@@ -172,7 +173,9 @@ LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, const LoopLimits& lim,
     }
     last_tick = t;
     node.run_cycle(tick_utime);
-    node.record_compute_time(static_cast<double>(now_ns(CLOCK_MONOTONIC) - t) * 1e-3);
+    const std::int64_t compute_ns = now_ns(CLOCK_MONOTONIC) - t;
+    node.record_compute_time(static_cast<double>(compute_ns) * 1e-3);
+    if (compute_ns > period_ns) ++res.over_period;
     (void)node.persist_auth_state();  // counted by the node (AUTH-4)
     if (lim.max_cycles > 0 && node.cycles() >= lim.max_cycles) {
       res.why = "max cycles reached";

@@ -25,12 +25,16 @@ struct LoopResult {
   int exit_code = 0;
   const char* why = "";           ///< why the loop ended
   std::vector<double> wakeup_us;  ///< every wake-up latency (fixed rate, when max_cycles > 0)
+  /// Lockstep: cycles whose compute took longer than the period of rate_hz. A lockstep cycle
+  /// has no deadline (the tick starts it), so these are not overruns; they say which cycles
+  /// would have missed the fixed-rate loop's.
+  std::int64_t over_period = 0;
 };
 
 /// Runs until stop != 0, max_cycles, or (lockstep) input end / idle timeout.
 LoopResult run_fixed_rate(guidance_lcm::GuidanceNode& node, double rate_hz, const LoopLimits& lim,
                           const volatile std::sig_atomic_t* stop);
-LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, const LoopLimits& lim,
+LoopResult run_lockstep(guidance_lcm::GuidanceNode& node, double rate_hz, const LoopLimits& lim,
                         const volatile std::sig_atomic_t* stop);
 
 /// SCHED_FIFO at priority and mlockall; says on stderr what was refused and continues.

@@ -48,6 +48,8 @@ def main():
     for r, v in s.items():
         check(v["inputs_identity_holds"], "%s: the node's input accounting holds" % r)
         check(full[r]["proposals_ignored"] == 0, "%s: every proposal verified" % r)
+        print("%s: cycle compute %s us, cycles over the period %d (reported, not checked)"
+              % (r, v["cycle_compute_us"], v["cycles_over_period"]))
         check(all(u["outcome"] == "accepted" for u in v["uplinks"]), "%s: every uplink accepted" % r)
     b = s["burn"]
     check(b["outcome"] == "burned" and len(b["burn_before_tca_s"]) == 1, "burn: one burn flown")
