@@ -104,7 +104,14 @@ BreakPoints break_points(const PrincipalEncounter& e, double r) noexcept {
     }
   }
   for (int i = 1; i < 8; ++i) b.add(-0.5 * kPi + i * kPi / 8.0);
-  std::sort(b.t.begin(), b.t.begin() + static_cast<std::ptrdiff_t>(b.n));
+  // Insertion sort: at most 30 values (435 comparisons), no recursion (std::sort's introsort
+  // recurses, which the flight stack bound cannot allow: scripts/stack_check); the same order.
+  for (std::size_t i = 1; i < b.n; ++i) {
+    const double v = b.t[i];
+    std::size_t j = i;
+    for (; j > 0 && b.t[j - 1] > v; --j) b.t[j] = b.t[j - 1];
+    b.t[j] = v;
+  }
   b.n = static_cast<std::size_t>(
       std::unique(b.t.begin(), b.t.begin() + static_cast<std::ptrdiff_t>(b.n)) - b.t.begin());
   return b;
