@@ -23,6 +23,8 @@ M repair(const M& c, const std::string& what, bool* npd, double* min_eig) {
       throw std::invalid_argument(what + ": covariance is not symmetric");
     case CovarianceStatus::kNoPositiveEigenvalue:
       throw std::invalid_argument(what + ": covariance has no positive eigenvalue");
+    case CovarianceStatus::kNotConverged:
+      throw std::invalid_argument(what + ": covariance's eigen-decomposition did not converge");
     case CovarianceStatus::kOk: break;
   }
   return out;

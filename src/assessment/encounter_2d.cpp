@@ -3,6 +3,7 @@
 // arithmetic of each step is the ground's, operation for operation, so that the node and
 // evade assess give the same bits (test Encounter2d.*).
 #include "evade/assessment/encounter_2d.hpp"
+#include "evade/assessment/symmetric_eigen.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,17 @@ namespace {
 // The repaired matrix as a value, as the ground's repair returned it before the flight form
 // (the product evaluated into the returned matrix: the same bits as before, test
 // golden.OutputsByteIdentical).
+// The decomposition the repair uses: Eigen's for the 3x3 (its closed-form tridiagonalization:
+// bounded stack), the cyclic Jacobi of symmetric_eigen.hpp for the 6x6 (Eigen's generic
+// tridiagonalization takes an alloca GCC cannot bound: scripts/stack_check).
+bool decompose(const Mat3& s, Vec3* l, Mat3* v) noexcept {
+  const Eigen::SelfAdjointEigenSolver<Mat3> es(s);
+  *l = es.eigenvalues();
+  *v = es.eigenvectors();
+  return true;
+}
+bool decompose(const Mat6& s, Vec6* l, Mat6* v) noexcept { return symmetric_eigen_jacobi<6>(s, l, v); }
+
 template <class M>
 M repaired(const M& c, bool* npd, double* min_eig, CovarianceStatus* st) noexcept {
   *st = CovarianceStatus::kOk;
@@ -32,8 +44,12 @@ M repaired(const M& c, bool* npd, double* min_eig, CovarianceStatus* st) noexcep
     return M::Zero();
   }
   M s = 0.5 * (c + c.transpose());
-  Eigen::SelfAdjointEigenSolver<M> es(s);
-  const auto& l = es.eigenvalues();
+  Eigen::Matrix<double, M::RowsAtCompileTime, 1> l;
+  M vecs;
+  if (!decompose(s, &l, &vecs)) {
+    *st = CovarianceStatus::kNotConverged;
+    return M::Zero();
+  }
   *min_eig = l.minCoeff();
   const double floor = std::max(1e-10 * l.maxCoeff(), 1e-12);
   *npd = *min_eig <= 0.0;
@@ -44,7 +60,7 @@ M repaired(const M& c, bool* npd, double* min_eig, CovarianceStatus* st) noexcep
   }
   auto clipped = l;
   for (int i = 0; i < clipped.size(); ++i) clipped(i) = std::max(clipped(i), floor);
-  return es.eigenvectors() * clipped.asDiagonal() * es.eigenvectors().transpose();
+  return vecs * clipped.asDiagonal() * vecs.transpose();
 }
 
 template <class M>
@@ -109,10 +125,11 @@ bool encounter_plane_into(const StateEci& obj1, const Mat3& cov1_eci_m2, const S
 }
 
 bool principal_axes_into(const EncounterPlane& ep, PrincipalEncounter* out) noexcept {
-  const Eigen::SelfAdjointEigenSolver<Mat2> es(0.5 * (ep.cov_m2 + ep.cov_m2.transpose()));
-  const Vec2& l = es.eigenvalues();  // ascending
+  Vec2 l;  // ascending
+  Mat2 q;
+  symmetric_eigen_2x2(ep.cov_m2, &l, &q);  // closed form (symmetric_eigen.hpp): bounded stack
   if (!(l(0) > 0.0)) return false;
-  const Vec2 m = es.eigenvectors().transpose() * ep.miss_m;
+  const Vec2 m = q.transpose() * ep.miss_m;
   *out = {m(0), m(1), std::sqrt(l(0)), std::sqrt(l(1))};
   return true;
 }

@@ -7,9 +7,8 @@
 #include <cmath>
 #include <utility>
 
-#include <Eigen/Eigenvalues>
-
 #include "evade/assessment/encounter_2d.hpp"
+#include "evade/assessment/symmetric_eigen.hpp"
 #include "evade/autonomy/internal/cam_boundary.hpp"
 #include "evade/autonomy/orbit_stm.hpp"
 #include "evade/core/constants.hpp"
@@ -85,10 +84,10 @@ CamStatus outcome_at(const ConjunctionEvent& e, const BurnStart& b, const AtTca&
   assessment::EncounterPlane ep;
   if (!assessment::encounter_plane_into(state_of(t.p1.x_eci), c1, state_of(t.p2.x_eci), c2, &ep))
     return CamStatus::kNoEncounter;
-  const Eigen::SelfAdjointEigenSolver<Mat2> es(0.5 * (ep.cov_m2 + ep.cov_m2.transpose()));
-  const Vec2& l = es.eigenvalues();
+  Vec2 l;
+  Mat2 q;
+  assessment::symmetric_eigen_2x2(ep.cov_m2, &l, &q);  // as principal_axes_into
   if (!(l(0) > 0.0)) return CamStatus::kNoEncounter;
-  const Mat2& q = es.eigenvectors();
   const Vec2 m = q.transpose() * ep.miss_m;
   out->principal = {m(0), m(1), std::sqrt(l(0)), std::sqrt(l(1))};
   Mat23 p;

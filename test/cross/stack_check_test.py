@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """scripts/stack_check against call graphs GCC writes for small programs made to break it
 (docs/GUIDANCE_NODE.md NODE-RT-6): an alloca on the path of GuidanceLaw::step, recursion, a
-frame over the budget, the same code clean, an alloca on the planning worker's path (reported
-OPEN, not failed: that entry is measured, not yet enforced), and a tree without call graphs.
+frame over the budget, the same code clean, an alloca on the planning worker's path, and a
+tree without call graphs.
   stack_check_test.py SOURCE_DIR WORK_DIR CXX
 Exit 0 when every case gives the expected verdict, 1 otherwise."""
 import os
@@ -31,14 +31,14 @@ void evade::guidance_lcm::internal::NodeCore::on_message(const void*, const char
 CLEAN_WORKER = "int worker_callee(int n) { return n + 2; }\n"
 CASES = {
     "clean": ("int callee(int n) { volatile char b[64]; b[0] = (char)n; return b[0]; }\n" +
-              CLEAN_WORKER, 0, "0 unbounded frames on the real-time paths"),
+              CLEAN_WORKER, 0, "0 unbounded frames on the checked paths"),
     "alloca_on_worker": ("int callee(int n) { return n; }\n"
                          "int worker_callee(int n) { char* p = (char*)__builtin_alloca((std::size_t)n);"
-                         " std::memset(p, 1, (std::size_t)n); return p[n / 2]; }", 0,
-                         "OPEN: unbounded frame on an open path"),
+                         " std::memset(p, 1, (std::size_t)n); return p[n / 2]; }", 1,
+                         "unbounded frame on a checked path"),
     "alloca_on_step": ("int callee(int n) { char* p = (char*)__builtin_alloca((std::size_t)n);"
                        " std::memset(p, 1, (std::size_t)n); return p[n / 2]; }" + "\n" + CLEAN_WORKER, 1,
-                       "unbounded frame on a real-time path"),
+                       "unbounded frame on a checked path"),
     "recursion": ("int callee(int n) { return n <= 0 ? 0 : 1 + callee(n - 1) + callee(n - 2); }" + "\n" + CLEAN_WORKER,
                   1, "recursion through"),
     "over_budget": ("int callee(int n) { volatile char b[20000]; b[n] = 1; return b[n / 2]; }" + "\n" + CLEAN_WORKER, 1,

@@ -32,6 +32,7 @@ enum class CovarianceStatus : std::uint8_t {
   kNotFinite,           ///< a NaN or Inf entry
   kAsymmetric,          ///< |C - C^T| > 1e-9 |C|
   kNoPositiveEigenvalue,
+  kNotConverged,        ///< the 6x6's Jacobi sweeps did not converge (symmetric_eigen.hpp)
 };
 
 /// Step 1 for a 3x3 and a 6x6 covariance: *out the matrix used (repaired when *npd), *min_eig
