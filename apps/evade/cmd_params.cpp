@@ -11,6 +11,8 @@
 #include "evade/config/read_params.hpp"
 #include "evade/conjunction/paper_step.hpp"
 #include "evade/conjunction/robust_screen.hpp"
+#include "evade/autonomy/onboard_cam.hpp"
+#include "evade/autonomy/response.hpp"
 #include "evade/commands/conjunction_uplink_command.hpp"
 #include "evade/hil/conjunction_hil.hpp"
 #include "evade/commands/screen_scenario.hpp"
@@ -43,6 +45,10 @@ std::string guidance_sections() {
                 "guidance.", guidance::guidance_params());
   md += section("Guidance node", "`evade_guidance_node --config` and flags", "node.",
                 guidance_lcm::node_params());
+  md += section("Onboard conjunction response", "`evade_guidance_node --config`", "node.autonomy.",
+                autonomy::responder_params());
+  md += section("Onboard conjunction response: burn search", "`evade_guidance_node --config`",
+                "node.autonomy.cam.", autonomy::cam_options_params());
   md += section("Simulator (paper 000)", "`evade sim`", "", sim::sim_params());
   return md;
 }
