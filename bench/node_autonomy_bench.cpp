@@ -66,17 +66,22 @@ class Worker {
   std::thread t_;
 };
 
+// One cycle at t: the nav sent (not timed), then drain + run_cycle timed [us].
+double timed_cycle(Flight& f, std::int64_t t) {
+  f.rig.pub.send(kChanNav, f.nav.at(t, ++f.nav_seq));
+  const std::int64_t t0 = now_ns();
+  f.rig.node.drain();
+  (void)f.rig.node.run_cycle(t);
+  return 1e-3 * static_cast<double>(now_ns() - t0);
+}
+
 // Runs cycles of f (timed: drain + run_cycle) until the node's proposal of version v leaves
 // "assessing" (or max_cycles); returns the cycle time reached.
 template <typename Record>
 std::int64_t cycles_until_decided(Flight& f, std::int64_t t, std::int32_t v, long max_cycles,
                                   Record record) {
   for (long k = 0; k < max_cycles; ++k, t += kPeriodUs) {
-    f.rig.pub.send(kChanNav, f.nav.at(t, ++f.nav_seq));
-    const std::int64_t t0 = now_ns();
-    f.rig.node.drain();
-    (void)f.rig.node.run_cycle(t);
-    record(1e-3 * static_cast<double>(now_ns() - t0));
+    record(timed_cycle(f, t));
     const evade_cam_proposal_t* p = f.proposals.last(node_event().event_id, v);
     if (p != nullptr && p->state != evade_cam_proposal_t::STATE_ASSESSING) return t + kPeriodUs;
   }
@@ -119,13 +124,7 @@ void BM_NodeCycleTrackingNoPlanning(benchmark::State& state) {
     Worker w(f.rig.node);
     f.rig.pub.send(kChanConjunction, conjunction_msg(node_event(7, 1), 1, kT0));
     std::int64_t t = cycles_until_decided(f, kT0, 1, 2000000, [](double) {});
-    for (int k = 0; k < 50000; ++k, t += kPeriodUs) {
-      f.rig.pub.send(kChanNav, f.nav.at(t, ++f.nav_seq));
-      const std::int64_t t0 = now_ns();
-      f.rig.node.drain();
-      (void)f.rig.node.run_cycle(t);
-      us.push_back(1e-3 * static_cast<double>(now_ns() - t0));
-    }
+    for (int k = 0; k < 50000; ++k, t += kPeriodUs) us.push_back(timed_cycle(f, t));
   }
   report(state, us, 1);
 }

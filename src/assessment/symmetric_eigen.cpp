@@ -100,7 +100,6 @@ bool symmetric_eigen_jacobi(const Eigen::Matrix<double, N, N>& a, Eigen::Matrix<
   return converged;
 }
 
-template bool symmetric_eigen_jacobi<3>(const Mat3&, Vec3*, Mat3*) noexcept;
 template bool symmetric_eigen_jacobi<6>(const Mat6&, Vec6*, Mat6*) noexcept;
 
 }  // namespace evade::assessment

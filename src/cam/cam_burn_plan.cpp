@@ -1,6 +1,8 @@
 // make_cam_burn_plan (include/evade/cam/cam_burn_plan.hpp).
 #include "evade/cam/cam_burn_plan.hpp"
 
+#include "evade/core/epoch.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -23,7 +25,6 @@ BurnPlan make_cam_burn_plan(const CamPlan& plan, std::int64_t plan_id) {
 }
 
 std::int64_t unix_utime_from_j2000(double t_j2000_s) {
-  constexpr double kJ2000UnixS = 946728000.0;  // 2000-01-01 12:00:00 UTC
   const double us = std::round((t_j2000_s + kJ2000UnixS) * 1e6);
   if (!std::isfinite(us) || us < 0.0 || us > 9.2e18)
     throw std::invalid_argument("epoch outside the Unix time range of a utime");

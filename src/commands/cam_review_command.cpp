@@ -24,7 +24,6 @@ namespace evade::commands {
 namespace {
 namespace cam_review_impl {  // names of its own: the module builds as unity batches
 
-constexpr double kJ2000UnixS = 946728000.0;  // 2000-01-01 12:00:00 UTC
 constexpr double kMaxSpanS = 7.0 * 86400.0;
 
 std::string utc_text_of(double j2000_s) { return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s)); }
@@ -171,7 +170,7 @@ CamReviewRequest read_cam_review_request(const std::string& cdm_text, const std:
 
 CamReviewResult run_cam_review(const CamReviewRequest& req) {
   using namespace cam_review_impl;
-  const double burn_s = static_cast<double>(req.proposal.burn_utime) * 1e-6 - kJ2000UnixS;
+  const double burn_s = seconds_since_j2000_from_unix_utime(req.proposal.burn_utime);
   check_request(req, burn_s);
   const int threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   conjunction::Sgp4MotionOptions mo;

@@ -152,8 +152,7 @@ ConjunctionUplink read_conjunction_uplink(const config::Scenario& sc, const std:
 namespace {
 
 std::string utc_of(std::int64_t utime_us) {
-  const double j2000_s = static_cast<double>(utime_us) * 1e-6 - 946728000.0;
-  return format_calendar_utc(calendar_from_seconds_since_j2000(j2000_s));
+  return format_calendar_utc(calendar_from_seconds_since_j2000(seconds_since_j2000_from_unix_utime(utime_us)));
 }
 
 nlohmann::json time_json(std::int64_t utime_us) {

@@ -1,6 +1,7 @@
 // One CDM per screening event (see screen_cdms.hpp; CCSDS 508.0-B-1). The message itself is
 // cdm_from_event's; this file builds the assumed covariance, the unique stems and the run's
 // header fields.
+#include "evade/core/epoch.hpp"
 #include "evade/commands/screen_cdms.hpp"
 
 #include <chrono>
@@ -19,7 +20,7 @@ namespace {
 double now_utc_j2000_s() {
   const double unix_s = std::chrono::duration<double>(
                             std::chrono::system_clock::now().time_since_epoch()).count();
-  return unix_s - 946728000.0;  // 2000-01-01T12:00:00 UTC in Unix seconds
+  return unix_s - kJ2000UnixS;
 }
 
 commands::EventCdmOptions cdm_base_options(const ScreenCdmOptions& o, const ScreenCdmRun& run) {

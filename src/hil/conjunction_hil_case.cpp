@@ -12,6 +12,7 @@
 #include "evade/commands/cdm_from_event.hpp"
 #include "evade/config/read_params.hpp"
 #include "evade/config/scenario.hpp"
+#include "evade/core/epoch.hpp"
 #include "evade/hil/conjunction_hil.hpp"
 
 namespace evade::hil {
@@ -19,7 +20,6 @@ namespace {
 
 using Cfg = ConjunctionHilConfig;
 constexpr double kDeg = M_PI / 180.0;
-constexpr double kUnixJ2000S = 946728000.0;   // 2000-01-01T12:00:00Z in Unix seconds
 constexpr std::int64_t kEpochUnixS = 1767225600;  // 2026-01-01T00:00:00Z: the run's t = 0
 
 const Param<Cfg> kRows[] = {
@@ -55,8 +55,6 @@ const Param<Cfg> kRows[] = {
     with_flag(EVADE_PARAM_REAL(Cfg, rate_hz, "Hz", 0.0, 1000.0, true,
                                "the exchange rate: the node's guidance.rate_hz"), "--rate-hz"),
 };
-
-double j2000_of(std::int64_t utime_us) { return 1e-6 * static_cast<double>(utime_us) - kUnixJ2000S; }
 
 // RTN covariance of the case's shape: position sigmas (s, 3s, s/2), velocities the same times the
 // mean motion (the drift of an orbit-determination error over a radian of orbit).
@@ -103,10 +101,10 @@ HilCdm make_cdm(const ConjunctionHilCase& c, const StateEci& other_tca, double t
                "the HIL case's secondary covariance", 0.0,
                n == 1 && c.run == HilRun::kUpdate ? "stale tracking: off the truth by hil.update_offset_m"
                                                   : "the simulator's truth at TCA"};
-  ev.tca_utc_j2000_s = j2000_of(c.sim.utime0_us) + c.tca_s;
+  ev.tca_utc_j2000_s = seconds_since_j2000_from_unix_utime(c.sim.utime0_us) + c.tca_s;
   ev.miss_m = (other_tca.r_eci_m - c.own_tca.r_eci_m).norm();
   ev.rel_speed_mps = (other_tca.v_eci_mps - c.own_tca.v_eci_mps).norm();
-  ev.screen_start_utc_j2000_s = j2000_of(c.sim.utime0_us) + t_send_s;
+  ev.screen_start_utc_j2000_s = seconds_since_j2000_from_unix_utime(c.sim.utime0_us) + t_send_s;
   ev.screen_stop_utc_j2000_s = ev.tca_utc_j2000_s + 86400.0;
   commands::EventCdmOptions opt;
   opt.message_id = std::string("EVADE-HIL-") + hil_run_name(c.run) + "-" + std::to_string(n);

@@ -93,11 +93,8 @@ struct ProposalRecorder::Impl {
   // Inside LCM's C dispatch: nothing here throws but the allocation of a change (bounded).
   static void on_message(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept {
     auto* self = static_cast<Impl*>(user);
-    const auto* data = static_cast<const std::uint8_t*>(rbuf->data);
     evade_cam_proposal_t m{};
-    const bool ok = telemetry_authentic(self->key, channel, data, rbuf->data_size) &&
-                    m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) ==
-                        static_cast<int>(rbuf->data_size);
+    const bool ok = decode_verified(self->key, rbuf, channel, &m);
     std::lock_guard<std::mutex> lock(self->mu);
     if (!ok) {
       ++self->ignored;

@@ -13,23 +13,11 @@ bool telemetry_authentic(const guidance_lcm::SigningKey& key, const char* channe
   return auth::mac_valid(key.key, channel, data, size);
 }
 
-namespace {
-
-template <typename Msg>
-bool read_verified(const TelemetryWatch& w, const lcm_recv_buf_t* rbuf, const char* channel,
-                   Msg* m) noexcept {
-  const auto* data = static_cast<const std::uint8_t*>(rbuf->data);
-  if (!telemetry_authentic(w.key, channel, data, rbuf->data_size)) return false;
-  return m->decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) ==
-         static_cast<int>(rbuf->data_size);
-}
-
-}  // namespace
 
 void TelemetryWatch::on_ack(const lcm_recv_buf_t* rbuf, const char* channel, void* user) noexcept {
   auto* w = static_cast<TelemetryWatch*>(user);
   evade_cmd_ack_t m{};
-  if (!read_verified(*w, rbuf, channel, &m) || w->n_acks == kMaxAcks) {
+  if (!decode_verified(w->key, rbuf, channel, &m) || w->n_acks == kMaxAcks) {
     ++w->ignored;
     return;
   }
@@ -41,7 +29,7 @@ void TelemetryWatch::on_status(const lcm_recv_buf_t* rbuf, const char* channel,
                                void* user) noexcept {
   auto* w = static_cast<TelemetryWatch*>(user);
   evade_guidance_status_t m{};
-  if (!read_verified(*w, rbuf, channel, &m)) {
+  if (!decode_verified(w->key, rbuf, channel, &m)) {
     ++w->ignored;
     return;
   }
@@ -54,7 +42,7 @@ void TelemetryWatch::on_proposal(const lcm_recv_buf_t* rbuf, const char* channel
                                  void* user) noexcept {
   auto* w = static_cast<TelemetryWatch*>(user);
   evade_cam_proposal_t m{};
-  if (!read_verified(*w, rbuf, channel, &m)) {
+  if (!decode_verified(w->key, rbuf, channel, &m)) {
     ++w->ignored;
     return;
   }

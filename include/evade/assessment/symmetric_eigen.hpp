@@ -20,7 +20,7 @@ inline constexpr int kMaxJacobiSweeps = 30;
 /// The symmetric part of a (its off-diagonal as the mean of a(0,1) and a(1,0)).
 void symmetric_eigen_2x2(const Mat2& a, Vec2* values, Mat2* vectors) noexcept;
 
-/// Cyclic Jacobi on the symmetric part of a. Returns false when the off-diagonal has not
+/// Cyclic Jacobi on the symmetric part of a (instantiated for N = 6, the covariance repair's). Returns false when the off-diagonal has not
 /// fallen below 1e-14 of the Frobenius norm within kMaxJacobiSweeps sweeps (finite symmetric
 /// input converges quadratically, in under 10 sweeps for N = 6) or a is not finite; the
 /// outputs then hold the last sweep's.
@@ -28,7 +28,6 @@ template <int N>
 bool symmetric_eigen_jacobi(const Eigen::Matrix<double, N, N>& a, Eigen::Matrix<double, N, 1>* values,
                             Eigen::Matrix<double, N, N>* vectors) noexcept;
 
-extern template bool symmetric_eigen_jacobi<3>(const Mat3&, Vec3*, Mat3*) noexcept;
 extern template bool symmetric_eigen_jacobi<6>(const Mat6&, Vec6*, Mat6*) noexcept;
 
 }  // namespace evade::assessment

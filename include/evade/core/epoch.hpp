@@ -5,6 +5,7 @@
 // Proleptic Gregorian calendar, valid for years 1900..2199.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace evade {
@@ -30,6 +31,12 @@ CalendarUtc calendar_from_seconds_since_j2000(double t_s);
 /// ("+hh:mm", "-hh:mm", "+hhmm", "+hh"), which is subtracted (2026-11-15T01:00:00+01:00 is
 /// 2026-11-15 00:00:00 UTC); throws std::invalid_argument naming the text on failure.
 CalendarUtc parse_calendar_utc(const std::string& text);
+/// J2000 (2000-01-01 12:00:00 UTC) in Unix seconds: the one offset between the two time bases.
+inline constexpr double kJ2000UnixS = 946728000.0;
+/// Seconds since J2000 of a Unix utime [us].
+inline double seconds_since_j2000_from_unix_utime(std::int64_t utime_us) noexcept {
+  return 1e-6 * static_cast<double>(utime_us) - kJ2000UnixS;
+}
 /// Formats as "YYYY-MM-DD hh:mm:ss.fffffffff".
 std::string format_calendar_utc(const CalendarUtc& c);
 

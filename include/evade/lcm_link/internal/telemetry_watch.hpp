@@ -26,6 +26,15 @@ namespace evade::lcm_link {
 bool telemetry_authentic(const guidance_lcm::SigningKey& key, const char* channel,
                          const std::uint8_t* data, std::size_t size) noexcept;
 
+/// Decodes rbuf into *m when it is authentic under key on channel and decodes exactly.
+template <typename Msg>
+bool decode_verified(const guidance_lcm::SigningKey& key, const lcm_recv_buf_t* rbuf, const char* channel,
+                     Msg* m) noexcept {
+  const auto* data = static_cast<const std::uint8_t*>(rbuf->data);
+  if (!telemetry_authentic(key, channel, data, rbuf->data_size)) return false;
+  return m->decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) == static_cast<int>(rbuf->data_size);
+}
+
 struct TelemetryWatch {
   static constexpr std::size_t kMaxAcks = 256;
 
