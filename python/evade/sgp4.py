@@ -40,7 +40,7 @@ class Propagation:
     """States of N objects at T instants (catalog order, instants as given)."""
 
     r_m: np.ndarray          #: (N, T, 3) position [m], NaN where SGP4 failed (not for decay)
-    v_mps: np.ndarray        #: (N, T, 3) velocity [m/s], likewise
+    v_mps: Optional[np.ndarray]  #: (N, T, 3) velocity [m/s], likewise; None when not asked for
     error: np.ndarray        #: (N, T) SGP4 error codes (int32; 0 computed, see error_text)
     ids: np.ndarray          #: (N,) NORAD catalog numbers (int64)
     names: List[str]         #: N object names
@@ -53,13 +53,17 @@ class Propagation:
 
 def propagate(catalog: Union[PathOrText, Catalog], start_utc: Optional[str],
               t_s: Union[Sequence[float], np.ndarray], frame: str = "teme",
-              threads: int = 0) -> Propagation:
+              threads: int = 0, velocities: bool = True) -> Propagation:
     """SGP4 of every valid object of ``catalog`` at ``start_utc + t_s``.
 
     catalog: a path or the file's text (TLE/3LE, OMM, GP JSON/CSV), or a :class:`Catalog`.
     start_utc: ISO 8601 UTC ("2024-03-01T12:00:00Z"); None: the latest element epoch.
     t_s: 1-D seconds after start_utc (any order). frame: 'teme' or 'eci' (J2000).
     threads: worker threads (0: every core). The GIL is released while SGP4 runs.
+    velocities: False leaves ``v_mps`` None (positions only: less memory to fill).
+    States come from SGP4's four-lane path where the processor has it (AVX2 and FMA), within
+    1e-13 |r| (near Earth) and 1e-12 |r| (deep space) of the scalar theory's, whose error
+    codes they keep.
     Every (object, instant) is computed on its own: an SGP4 error at one instant gives its
     code in ``error`` and NaN states there, and the other instants are still computed.
     Raises evade.InputError for an unreadable start, a non-finite time, an unknown frame or a
@@ -68,7 +72,8 @@ def propagate(catalog: Union[PathOrText, Catalog], start_utc: Optional[str],
     times = np.ascontiguousarray(t_s, dtype=np.float64)
     if times.ndim != 1:
         raise _evade.InputError(f"t_s must be 1-D seconds after start_utc, not of shape {times.shape}")
-    start, r, v, err = _evade.sgp4_propagate(cat, start_utc or "", times, frame, int(threads))
+    start, r, v, err = _evade.sgp4_propagate(cat, start_utc or "", times, frame, int(threads),
+                                          bool(velocities))
     return Propagation(r_m=r, v_mps=v, error=err, ids=cat.ids, names=list(cat.names), t_s=times,
                        start_utc=_evade.utc_text(start), start_j2000_s=start, frame=frame,
                        issues=list(cat.issues))

@@ -48,7 +48,7 @@ std::vector<std::string> catalog_names(const Catalog& c) {
 using TimesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
 nb::tuple propagate(const Catalog& c, const std::string& start_utc, TimesIn t_s,
-                    const std::string& frame, int threads) {
+                    const std::string& frame, int threads, bool velocities) {
   sgp4::StateGridRequest req;
   req.start_j2000_s = sgp4::start_j2000_s_from_utc(start_utc, c);
   req.t_s = t_s.data();
@@ -56,16 +56,22 @@ nb::tuple propagate(const Catalog& c, const std::string& start_utc, TimesIn t_s,
   req.j2000 = sgp4::frame_is_j2000(frame);
   req.threads = threads;
   sgp4::check_state_grid_request(c, req);
-  const std::size_t n = c.objects.size(), states = n * req.n_times;
-  std::vector<double> r(3 * states), v(3 * states);
-  std::vector<std::int32_t> err(states);
+  const std::size_t n = c.objects.size();
+  // propagate_grid writes every element: the arrays are the caller's, not copied after.
+  NumpyArray<double> r = numpy_uninitialized<double>({n, req.n_times, 3});
+  NumpyArray<std::int32_t> err = numpy_uninitialized<std::int32_t>({n, req.n_times});
+  nb::object v = nb::none();
+  double* v_data = nullptr;
+  if (velocities) {
+    NumpyArray<double> va = numpy_uninitialized<double>({n, req.n_times, 3});
+    v_data = va.data();
+    v = nb::cast(va, nb::rv_policy::reference);
+  }
   {
     nb::gil_scoped_release unlocked;
-    sgp4::propagate_grid(c, req, {r.data(), v.data(), err.data()});
+    sgp4::propagate_grid(c, req, {r.data(), v_data, err.data()});
   }
-  return nb::make_tuple(req.start_j2000_s, numpy_from_vector(std::move(r), {n, req.n_times, 3}),
-                        numpy_from_vector(std::move(v), {n, req.n_times, 3}),
-                        numpy_from_vector(std::move(err), {n, req.n_times}));
+  return nb::make_tuple(req.start_j2000_s, r, v, err);
 }
 
 }  // namespace
@@ -86,8 +92,8 @@ void bind_sgp4(nb::module_& m) {
         return ccsds::read_catalog(read_text_file(path, "catalog"), path);
       }, nb::arg("path"));
   m.def("sgp4_propagate", &propagate, nb::arg("catalog"), nb::arg("start_utc"), nb::arg("t_s"),
-        nb::arg("frame"), nb::arg("threads"),
-        "(start_j2000_s, r_m[N,T,3], v_mps[N,T,3], error[N,T]) of every object at every instant.");
+        nb::arg("frame"), nb::arg("threads"), nb::arg("velocities"),
+        "(start_j2000_s, r_m[N,T,3], v_mps[N,T,3] or None, error[N,T]) of every object at every instant.");
   m.def("sgp4_error_text", [](int code) -> std::string {
         if (code < 0 || code > static_cast<int>(sgp4::Sgp4Error::kDecayed)) return "unknown code";
         return sgp4::sgp4_error_text(static_cast<sgp4::Sgp4Error>(code));

@@ -1,5 +1,6 @@
 """evade.sgp4: catalogs read as the CLI reads them, and propagate() against `evade propagate`
-(the same library path: bit for bit) and against python sgp4's SatrecArray (an independent
+(the same theory, four lanes at a time here where the CLI takes one: within the four-lane
+bound, 1e-12 |r| and 1e-6 m/s, sgp4.hpp) and against python sgp4's SatrecArray (an independent
 implementation of the same theory: within 1 cm and 10 µm/s)."""
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ CATALOG = "scenarios/catalogs/synthetic-1200.tle"
 
 
 @pytest.mark.parametrize("frame", ["teme", "eci"])
-def test_propagate_equals_cli_json_bit_for_bit(repo, cli_json, frame):
+def test_propagate_equals_cli_json_within_the_lane_bound(repo, cli_json, frame):
     doc = cli_json(["propagate", "--tle", str(repo / CATALOG), "--span-s", "3600", "--step-s", "600",
                     "--frame", frame])
     t_s = np.arange(0.0, 3601.0, 600.0)
@@ -24,9 +25,13 @@ def test_propagate_equals_cli_json_bit_for_bit(repo, cli_json, frame):
     assert p.names == [o["name"] for o in doc["objects"]]
     r_cli = np.array([[s["r_m"] for s in o["states"]] for o in doc["objects"]])
     v_cli = np.array([[s["v_mps"] for s in o["states"]] for o in doc["objects"]])
-    assert np.array_equal(p.r_m, r_cli)
-    assert np.array_equal(p.v_mps, v_cli)
+    # kSgp4X4DeepPositionErrorRel (the larger of the two lane bounds) and sgp4_x4_test's 1e-6 m/s
+    dr = np.linalg.norm(p.r_m - r_cli, axis=-1)
+    assert np.all(dr <= 1e-12 * np.linalg.norm(r_cli, axis=-1))
+    assert np.max(np.linalg.norm(p.v_mps - v_cli, axis=-1)) <= 1e-6
     assert not p.error.any()
+    only_r = evade.sgp4.propagate(repo / CATALOG, None, t_s, frame=frame, threads=2, velocities=False)
+    assert only_r.v_mps is None and np.array_equal(only_r.r_m, p.r_m)
 
 
 def test_propagate_matches_python_sgp4_satrec_array(repo):

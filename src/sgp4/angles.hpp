@@ -1,5 +1,8 @@
-// pi and 2 pi for the SGP4 sources (one declaration for every file of the library).
+// pi and 2 pi for the SGP4 sources (one declaration for every file of the library), and the
+// reference's fmod(x, 2 pi) as the same double computed faster (fmod_two_pi.hpp).
 #pragma once
+
+#include "evade/sgp4/internal/fmod_two_pi.hpp"
 
 namespace evade::sgp4::detail {
 

@@ -108,7 +108,7 @@ Dscom dscom(const DeepSpaceEpoch& ep) {
   o.xnoi = 1.0 / ep.no_unkozai;
   const double snodm = std::sin(ep.nodeo), cnodm = std::cos(ep.nodeo);
   const double day = ep.epoch_days_1950 + 18261.5;  // days since 2000 Jan 0.5 (tc = 0)
-  const double xnodce = std::fmod(4.5236020 - 9.2422029e-4 * day, kTwoPi);
+  const double xnodce = detail::fmod_two_pi(4.5236020 - 9.2422029e-4 * day);
   const double stem = std::sin(xnodce), ctem = std::cos(xnodce);
   const double zcosil = 0.91375164 - 0.03568096 * ctem;
   const double zsinil = std::sqrt(1.0 - zcosil * zcosil);
@@ -127,8 +127,8 @@ Dscom dscom(const DeepSpaceEpoch& ep) {
   const BodyTerms& s = d.sun;
   const BodyTerms& m = d.moon;
   LunarSolarPeriodics& p = d.p;
-  p.zmol = std::fmod(4.7199672 + 0.22997150 * day - gam, kTwoPi);
-  p.zmos = std::fmod(6.2565837 + 0.017201977 * day, kTwoPi);
+  p.zmol = detail::fmod_two_pi(4.7199672 + 0.22997150 * day - gam);
+  p.zmos = detail::fmod_two_pi(6.2565837 + 0.017201977 * day);
   p.se2 = 2.0 * s.s1 * s.s6;
   p.se3 = 2.0 * s.s1 * s.s7;
   p.si2 = 2.0 * s.s2 * s.z12;
@@ -261,7 +261,7 @@ void half_day_resonance(const DeepSpaceEpoch& ep, const OrbitAngles& o, double a
   temp = 2.0 * temp1 * 2.1765803e-9;  // root54
   r.d5421 = temp * f542 * g.g521;
   r.d5433 = temp * f543 * g.g533;
-  r.xlamo = std::fmod(ep.mo + ep.nodeo + ep.nodeo - theta - theta, kTwoPi);
+  r.xlamo = detail::fmod_two_pi(ep.mo + ep.nodeo + ep.nodeo - theta - theta);
   r.xfact = ep.mdot + ds.dmdt + 2.0 * (ep.nodedot + ds.dnodt - kRptim) - ep.no_unkozai;
 }
 
@@ -282,7 +282,7 @@ void synchronous_resonance(const DeepSpaceEpoch& ep, const OrbitAngles& o, doubl
   r.del2 = 2.0 * del1 * f220 * g200 * 1.7891679e-6;         // q22
   r.del3 = 3.0 * del1 * f330 * g300 * 2.2123015e-7 * aonv;  // q33
   r.del1 = del1 * f311 * g310 * 2.1460748e-6 * aonv;        // q31
-  r.xlamo = std::fmod(ep.mo + ep.nodeo + ep.argpo - theta, kTwoPi);
+  r.xlamo = detail::fmod_two_pi(ep.mo + ep.nodeo + ep.argpo - theta);
   r.xfact = ep.mdot + (ep.argpdot + ep.nodedot) - kRptim + ds.dmdt + ds.domdt + ds.dnodt -
             ep.no_unkozai;
 }
@@ -364,7 +364,7 @@ DeepSpaceTerms deep_space_init(const DeepSpaceEpoch& ep) {
   if (nm >= 8.26e-3 && nm <= 9.24e-3 && ep.ecco >= 0.5) irez = 2;
   ds.resonance.irez = irez;
   if (irez == 0) return ds;
-  const double theta = std::fmod(ep.gsto, kTwoPi);
+  const double theta = detail::fmod_two_pi(ep.gsto);
   const double aonv = std::pow(nm / ep.xke, 2.0 / 3.0);
   if (irez == 2) half_day_resonance(ep, d.o, aonv, theta, ds);
   if (irez == 1) synchronous_resonance(ep, d.o, aonv, theta, ds);
@@ -374,7 +374,7 @@ DeepSpaceTerms deep_space_init(const DeepSpaceEpoch& ep) {
 
 void deep_space_secular(const DeepSpaceTerms& ds, const DeepSpaceEpoch& ep, double t,
                         DeepSpaceMean& m) {
-  const double theta = std::fmod(ep.gsto + t * kRptim, kTwoPi);
+  const double theta = detail::fmod_two_pi(ep.gsto + t * kRptim);
   m.em += ds.dedt * t;
   m.inclm += ds.didt * t;
   m.argpm += ds.domdt * t;
@@ -468,7 +468,7 @@ void deep_space_periodics(const LunarSolarPeriodics& p, double t, OperationMode 
   double alfdp = sinip * sinop, betdp = sinip * cosop;
   alfdp += ph * cosop + pinc * cosip * sinop;
   betdp += -ph * sinop + pinc * cosip * cosop;
-  e.nodep = std::fmod(e.nodep, kTwoPi);
+  e.nodep = detail::fmod_two_pi(e.nodep);
   if (e.nodep < 0.0 && mode == OperationMode::kAfspc) e.nodep += kTwoPi;
   const double xls = e.mp + e.argpp + pl + pgh + (cosip - pinc * sinip) * e.nodep;
   const double xnoh = e.nodep;

@@ -1,10 +1,18 @@
-// SGP4 of N objects x T instants into caller-owned arrays (see propagate_grid.hpp): one
-// propagator per object, objects dealt to worker threads in turn; every (object, instant) is
-// evaluated on its own; an error writes its code there, and NaN states unless the theory
-// computed one (decay).
+// SGP4 of N objects x T instants into caller-owned arrays (see propagate_grid.hpp). Objects
+// go to the worker threads in blocks of kBlockObjects (an atomic counter deals them, so a
+// block of deep-space objects does not hold one thread back); in a block, the objects the
+// four-lane path takes (sgp4_x4_vectorized(), no init error) are propagated four at a time
+// (propagate_x4, the path the screener uses), near-Earth and deep-space groups apart, the
+// others one at a time; instants go in chunks of kChunkInstants (a block's lanes stay in
+// cache over a chunk). The TEME -> J2000 matrices are computed once per request, one per
+// instant (72 bytes each: at most 1.5 times what the states of one object take). A lane the four-lane path cannot take at an instant
+// (ok false: an error, a decay, a correction out of its range) is redone by propagate_s, so
+// the error codes are the scalar theory's. An error writes its code and NaN states unless
+// the theory computed one (decay).
 #include "evade/sgp4/propagate_grid.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -18,31 +26,142 @@ namespace evade::sgp4 {
 namespace {
 
 constexpr double kMaxStates = 1e9;  // 48 GB of r and v: far past any machine this runs on
+constexpr std::size_t kBlockObjects = 64;
+constexpr std::size_t kChunkInstants = 256;
 
-void propagate_object(const MeanElements& m, const StateGridRequest& req, std::size_t row,
-                      const StateGridOut& out) {
-  const Sgp4Propagator prop(m, OperationMode::kImproved);
-  const double offset_s = req.start_j2000_s - epoch_seconds_since_j2000(m);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t k = 0; k < req.n_times; ++k) {
-    const std::size_t i = row * req.n_times + k;
-    double* r = out.r_m + 3 * i;
-    double* v = out.v_mps + 3 * i;
-    Sgp4State s;
-    if (prop.init_error() != Sgp4Error::kNone) s.error = prop.init_error();
-    else s = prop.propagate_s(offset_s + req.t_s[k]);
-    out.error[i] = static_cast<std::int32_t>(s.error);
-    // kDecayed keeps the state the theory computed (the reference and python sgp4 do too).
-    if (s.error != Sgp4Error::kNone && s.error != Sgp4Error::kDecayed) {
-      std::fill(r, r + 3, nan);
-      std::fill(v, v + 3, nan);
-      continue;
-    }
-    Eigen::Vector3d r_m = s.r_teme_m, v_mps = s.v_teme_mps;
-    if (req.j2000) teme_to_j2000(req.start_j2000_s + req.t_s[k], s.r_teme_m, s.v_teme_mps, r_m, v_mps);
-    std::copy(r_m.data(), r_m.data() + 3, r);
-    std::copy(v_mps.data(), v_mps.data() + 3, v);
+// The instants [k0, k1) of a request, with the J2000 matrices of all its instants when the
+// frame is J2000 (m[k] at req.t_s[k]).
+struct Chunk {
+  std::size_t k0 = 0, k1 = 0;
+  const Eigen::Matrix3d* m = nullptr;
+};
+
+// One object of a block: its propagator, the offset of the request's start from its epoch
+// and its row in the outputs.
+struct Row {
+  Sgp4Propagator prop;
+  double offset_s;
+  std::size_t row;
+};
+
+void write_state(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
+                 std::size_t row, std::size_t k, const double r[3], const double v[3]) {
+  const std::size_t i = row * req.n_times + k;
+  double* ro = out.r_m + 3 * i;
+  double* vo = out.v_mps == nullptr ? nullptr : out.v_mps + 3 * i;
+  if (!req.j2000) {
+    std::copy(r, r + 3, ro);
+    if (vo != nullptr) std::copy(v, v + 3, vo);
+    return;
   }
+  const Eigen::Matrix3d& m = c.m[k];
+  const Eigen::Vector3d rj = m * Eigen::Vector3d(r[0], r[1], r[2]);
+  std::copy(rj.data(), rj.data() + 3, ro);
+  if (vo == nullptr) return;
+  const Eigen::Vector3d vj = m * Eigen::Vector3d(v[0], v[1], v[2]);
+  std::copy(vj.data(), vj.data() + 3, vo);
+}
+
+// One (object, instant) by the scalar theory: its code, and its state or NaN.
+void scalar_state(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
+                  const Row& o, std::size_t k) {
+  Sgp4State s;
+  if (o.prop.init_error() != Sgp4Error::kNone) s.error = o.prop.init_error();
+  else s = o.prop.propagate_s(o.offset_s + req.t_s[k]);
+  out.error[o.row * req.n_times + k] = static_cast<std::int32_t>(s.error);
+  // kDecayed keeps the state the theory computed (the reference and python sgp4 do too).
+  if (s.error != Sgp4Error::kNone && s.error != Sgp4Error::kDecayed) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double r[3] = {nan, nan, nan};
+    write_state(req, out, c, o.row, k, r, r);
+    return;
+  }
+  write_state(req, out, c, o.row, k, s.r_teme_m.data(), s.v_teme_mps.data());
+}
+
+// The four-lane states of lane j at instant k into its row (TEME as computed, or rotated).
+inline void store_lane(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
+                       std::size_t row, std::size_t k, const double r[3], const double v[3]) {
+  const std::size_t i = row * req.n_times + k;
+  out.error[i] = 0;
+  if (req.j2000) {
+    write_state(req, out, c, row, k, r, v);
+    return;
+  }
+  double* ro = out.r_m + 3 * i;
+  ro[0] = r[0], ro[1] = r[1], ro[2] = r[2];
+  if (out.v_mps == nullptr) return;
+  double* vo = out.v_mps + 3 * i;
+  vo[0] = v[0], vo[1] = v[1], vo[2] = v[2];
+}
+
+// Four rows of one kind (the last repeated where fewer than four remain) over a chunk.
+void lane_states(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
+                 const Row* const rows[4], std::size_t n) {
+  const Sgp4Propagator* p[4];
+  double offset_min[4];
+  for (std::size_t j = 0; j < 4; ++j) p[j] = &rows[j]->prop, offset_min[j] = rows[j]->offset_s;
+  const Sgp4X4Lanes lanes(p);
+  for (std::size_t k = c.k0; k < c.k1; ++k) {
+    double tsince_min[4], r[4][3], v[4][3];
+    bool ok[4];
+    for (std::size_t j = 0; j < 4; ++j) tsince_min[j] = (offset_min[j] + req.t_s[k]) / 60.0;  // as propagate_s
+    propagate_x4(lanes, p, tsince_min, r, v, ok);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (ok[j]) store_lane(req, out, c, rows[j]->row, k, r[j], v[j]);
+      else scalar_state(req, out, c, *rows[j], k);
+    }
+  }
+}
+
+// 0: one at a time; 1: near-Earth lanes; 2: deep-space lanes.
+int lane_kind(const Sgp4Propagator& p) {
+  if (!sgp4_x4_vectorized() || p.init_error() != Sgp4Error::kNone) return 0;
+  return p.deep_space() ? 2 : 1;
+}
+
+// The rows of one block over one chunk: each kind's rows in groups of four, the rest alone.
+void block_chunk(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
+                 const std::vector<Row>& rows) {
+  for (const int kind : {1, 2}) {
+    const Row* group[4];
+    std::size_t n = 0;
+    for (const Row& o : rows) {
+      if (lane_kind(o.prop) != kind) continue;
+      group[n++] = &o;
+      if (n < 4) continue;
+      lane_states(req, out, c, group, 4);
+      n = 0;
+    }
+    if (n == 0) continue;
+    for (std::size_t j = n; j < 4; ++j) group[j] = group[n - 1];
+    lane_states(req, out, c, group, n);
+  }
+  for (const Row& o : rows)
+    if (lane_kind(o.prop) == 0)
+      for (std::size_t k = c.k0; k < c.k1; ++k) scalar_state(req, out, c, o, k);
+}
+
+void propagate_block(const Catalog& catalog, const StateGridRequest& req, const StateGridOut& out,
+                     std::size_t first, std::size_t last, const Eigen::Matrix3d* m) {
+  std::vector<Row> rows;
+  rows.reserve(last - first);
+  for (std::size_t i = first; i < last; ++i) {
+    const MeanElements& m = catalog.objects[i];
+    rows.push_back({Sgp4Propagator(m, OperationMode::kImproved),
+                    req.start_j2000_s - epoch_seconds_since_j2000(m), i});
+  }
+  for (std::size_t k0 = 0; k0 < req.n_times; k0 += kChunkInstants)
+    block_chunk(req, out, Chunk{k0, std::min(req.n_times, k0 + kChunkInstants), m}, rows);
+}
+
+// work(j) on threads j = 1 .. threads - 1 and on this one (j = 0).
+template <typename Work>
+void run_on_threads(int threads, const Work& work) {
+  std::vector<std::thread> pool;
+  for (int j = 1; j < threads; ++j) pool.emplace_back(work, j);
+  work(0);
+  for (std::thread& th : pool) th.join();
 }
 
 }  // namespace
@@ -87,22 +206,21 @@ void propagate_grid(const Catalog& catalog, const StateGridRequest& req, const S
   check_state_grid_request(catalog, req);
   const std::size_t n = catalog.objects.size();
   if (req.n_times == 0) return;
-  if (out.r_m == nullptr || out.v_mps == nullptr || out.error == nullptr)
+  if (out.r_m == nullptr || out.error == nullptr)
     throw std::invalid_argument("propagate_grid: an output array is missing");
+  const std::size_t blocks = (n + kBlockObjects - 1) / kBlockObjects;
   int threads = req.threads > 0 ? req.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), n));
-  auto work = [&](std::size_t first) {
-    for (std::size_t i = first; i < n; i += static_cast<std::size_t>(threads))
-      propagate_object(catalog.objects[i], req, i, out);
-  };
-  if (threads == 1) {
-    work(0);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (int j = 1; j < threads; ++j) pool.emplace_back(work, static_cast<std::size_t>(j));
-  work(0);
-  for (std::thread& th : pool) th.join();
+  threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), blocks));
+  std::vector<Eigen::Matrix3d> m(req.j2000 ? req.n_times : 0);
+  run_on_threads(threads, [&](int j) {  // the matrices, instants split between the threads
+    for (std::size_t k = static_cast<std::size_t>(j); k < m.size(); k += static_cast<std::size_t>(threads))
+      m[k] = teme_to_j2000_matrix(req.start_j2000_s + req.t_s[k]);
+  });
+  std::atomic<std::size_t> next{0};
+  run_on_threads(threads, [&](int) {
+    for (std::size_t b = next++; b < blocks; b = next++)
+      propagate_block(catalog, req, out, b * kBlockObjects, std::min(n, (b + 1) * kBlockObjects), m.data());
+  });
 }
 
 }  // namespace evade::sgp4

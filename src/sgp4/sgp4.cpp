@@ -43,7 +43,7 @@ double gsto_afspc(double epoch_days_1950) noexcept {
   const double thgr70 = 1.7321343856509374;
   const double fk5r = 5.07551419432269442e-15;
   const double c1p2p = c1 + kTwoPi;
-  double gsto = std::fmod(thgr70 + c1 * ds70 + c1p2p * tfrac + ts70 * ts70 * fk5r, kTwoPi);
+  double gsto = detail::fmod_two_pi(thgr70 + c1 * ds70 + c1p2p * tfrac + ts70 * ts70 * fk5r);
   if (gsto < 0.0) gsto += kTwoPi;
   return gsto;
 }
@@ -129,7 +129,7 @@ double gmst_iau82_rad(double jd_ut1) noexcept {
   const double tut1 = (jd_ut1 - 2451545.0) / 36525.0;
   double temp = -6.2e-6 * tut1 * tut1 * tut1 + 0.093104 * tut1 * tut1 +
                 (876600.0 * 3600 + 8640184.812866) * tut1 + 67310.54841;  // s
-  temp = std::fmod(temp * kDeg2Rad / 240.0, kTwoPi);  // 360 deg / 86400 s = 1 / 240
+  temp = detail::fmod_two_pi(temp * kDeg2Rad / 240.0);  // 360 deg / 86400 s = 1 / 240
   if (temp < 0.0) temp += kTwoPi;
   return temp;
 }
@@ -324,10 +324,10 @@ Sgp4Error Sgp4Propagator::mean_min(double t, PerturbedElements& p, double& am,
   if (em >= 1.0 || em < -0.001) return Sgp4Error::kMeanEccentricity;
   if (em < 1.0e-6) em = 1.0e-6;
   const double mm0 = m.mm + no_unkozai_ * templ;
-  const double xlm = std::fmod(mm0 + m.argpm + m.nodem, kTwoPi);
-  p.nodep = std::fmod(m.nodem, kTwoPi);
-  p.argpp = std::fmod(m.argpm, kTwoPi);
-  p.mp = std::fmod(xlm - p.argpp - p.nodep, kTwoPi);
+  const double xlm = detail::fmod_two_pi(mm0 + m.argpm + m.nodem);
+  p.nodep = detail::fmod_two_pi(m.nodem);
+  p.argpp = detail::fmod_two_pi(m.argpm);
+  p.mp = detail::fmod_two_pi(xlm - p.argpp - p.nodep);
   p.ep = em;
   p.inclp = m.inclm;
   return Sgp4Error::kNone;
@@ -365,7 +365,7 @@ Sgp4State Sgp4Propagator::position_velocity(const PerturbedElements& p, double a
   double temp = 1.0 / (am * (1.0 - p.ep * p.ep));
   const double aynl = p.ep * std::sin(p.argpp) + temp * c.aycof;
   const double xl = p.mp + p.argpp + p.nodep + temp * c.xlcof * axnl;
-  const double u = std::fmod(xl - p.nodep, kTwoPi);
+  const double u = detail::fmod_two_pi(xl - p.nodep);
   const SinCos ks = solve_kepler(u, axnl, aynl);
   const double ecose = axnl * ks.c + aynl * ks.s;
   const double esine = axnl * ks.s - aynl * ks.c;

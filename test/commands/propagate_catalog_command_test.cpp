@@ -1,7 +1,8 @@
 // `evade propagate --tle/--omm` as a library call: Vallado et al. 2006 ("Revisiting
 // Spacetrack Report #3") verification object 00005 at its epoch, the span/step/frame checks,
-// the JSON keys the CLI prints, the text summary, and every state equal to the grid call's
-// (sgp4::propagate_grid) bit for bit on the whole SGP4-VER set.
+// the JSON keys the CLI prints, the text summary, and every state within the four-lane bound
+// of the grid call's (sgp4::propagate_grid, which takes the four-lane path where the command
+// takes the scalar theory) on the whole SGP4-VER set, with the same errors.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 
 #include "evade/commands/propagate_catalog_stream.hpp"
 #include "evade/sgp4/propagate_grid.hpp"
+#include "evade/sgp4/sgp4.hpp"
 #include "evade/sgp4/tle_reader.hpp"
 
 namespace evade::commands {
@@ -147,8 +149,10 @@ std::vector<double> hourly(int hours) {
   return t;
 }
 
-// Every state `evade propagate` prints (up to a track's first SGP4 error) is the grid's, bit
-// for bit, in both frames; at the instant the command stopped, the grid has the same error.
+// Every state `evade propagate` prints (up to a track's first SGP4 error) is the grid's within
+// the four-lane bound (sgp4.hpp: kSgp4X4PositionErrorRel |r| near Earth,
+// kSgp4X4DeepPositionErrorRel |r| in deep space; velocities within sgp4_x4_test.cpp's
+// 1e-6 m/s), in both frames; at the instant the command stopped, the grid has the same error.
 TEST(PropagateCatalogCommand, EqualsTheGridCallOnSgp4Ver) {
   for (const char* frame : {"teme", "eci"}) {
     PropagateCatalogRequest cmd;
@@ -160,15 +164,19 @@ TEST(PropagateCatalogCommand, EqualsTheGridCallOnSgp4Ver) {
     const std::vector<double> t = hourly(24);
     const Grid g = run_grid(cmd.catalog, r.start_j2000_s, t, sgp4::frame_is_j2000(frame), 2);
     ASSERT_EQ(r.objects.size(), cmd.catalog.objects.size());
+    std::vector<bool> deep;
+    for (const sgp4::MeanElements& m : cmd.catalog.objects) deep.push_back(sgp4::Sgp4Propagator(m).deep_space());
     int errors = 0;
     for (std::size_t i = 0; i < r.objects.size(); ++i) {
       const CatalogTrack& tr = r.objects[i];
       for (std::size_t k = 0; k < tr.states.size(); ++k) {
         const std::size_t s = i * t.size() + k;
-        for (int c = 0; c < 3; ++c) {
-          ASSERT_EQ(g.r[3 * s + c], tr.states[k].r_m[c]) << tr.id << " k " << k;
-          ASSERT_EQ(g.v[3 * s + c], tr.states[k].v_mps[c]) << tr.id << " k " << k;
-        }
+        const Eigen::Vector3d& r_m = tr.states[k].r_m;
+        const double rel = deep[i] ? sgp4::kSgp4X4DeepPositionErrorRel : sgp4::kSgp4X4PositionErrorRel;
+        ASSERT_LE((Eigen::Vector3d(g.r[3 * s], g.r[3 * s + 1], g.r[3 * s + 2]) - r_m).norm(), rel * r_m.norm())
+            << tr.id << " k " << k;
+        ASSERT_LE((Eigen::Vector3d(g.v[3 * s], g.v[3 * s + 1], g.v[3 * s + 2]) - tr.states[k].v_mps).norm(), 1e-6)
+            << tr.id << " k " << k;
       }
       if (tr.error != Sgp4Error::kNone) {
         ++errors;

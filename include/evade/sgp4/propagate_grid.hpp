@@ -8,7 +8,10 @@
 // first SGP4 error, every (object, instant) here is evaluated on its own: the instants may be
 // in any order, and an error at one instant (decay, eccentricity out of range) is reported
 // there, with NaN states (decay keeps the state the theory computed), as python sgp4's
-// SatrecArray does.
+// SatrecArray does. The states come from the four-lane path where the processor has it
+// (sgp4_x4_vectorized(): propagate_x4, within kSgp4X4PositionErrorRel |r| of propagate_s
+// near Earth and kSgp4X4DeepPositionErrorRel |r| in deep space), else from propagate_s; the
+// error codes are always propagate_s's.
 #pragma once
 
 #include <cstddef>
@@ -29,7 +32,7 @@ double start_j2000_s_from_utc(const std::string& start_utc, const Catalog& catal
 /// component) and n_objects x n_times error codes (Sgp4Error as int32; 0 = computed).
 struct StateGridOut {
   double* r_m = nullptr;       ///< position in the chosen frame [m]; NaN at an error other than decay
-  double* v_mps = nullptr;     ///< velocity in the chosen frame [m/s]; NaN likewise
+  double* v_mps = nullptr;     ///< velocity in the chosen frame [m/s]; NaN likewise; nullptr: positions only
   std::int32_t* error = nullptr;
 };
 
