@@ -72,8 +72,12 @@ def propagate(catalog: Union[PathOrText, Catalog], start_utc: Optional[str],
     times = np.ascontiguousarray(t_s, dtype=np.float64)
     if times.ndim != 1:
         raise _evade.InputError(f"t_s must be 1-D seconds after start_utc, not of shape {times.shape}")
-    start, r, v, err = _evade.sgp4_propagate(cat, start_utc or "", times, frame, int(threads),
-                                          bool(velocities))
+    n, t = len(cat), times.shape[0]
+    # numpy's own arrays: it advises huge pages for large ones, so the first touch is cheap
+    r = np.empty((n, t, 3))
+    v = np.empty((n, t, 3)) if velocities else None
+    err = np.empty((n, t), dtype=np.int32)
+    start = _evade.sgp4_propagate_into(cat, start_utc or "", times, frame, int(threads), r, v, err)
     return Propagation(r_m=r, v_mps=v, error=err, ids=cat.ids, names=list(cat.names), t_s=times,
                        start_utc=_evade.utc_text(start), start_j2000_s=start, frame=frame,
                        issues=list(cat.issues))

@@ -29,17 +29,6 @@ NumpyArray<T> numpy_from_vector(std::vector<T> values, std::vector<std::size_t> 
   return NumpyArray<T>(owned->data(), shape.size(), shape.data(), owner);
 }
 
-/// A numpy array of the given shape whose values are not initialised: for a call that writes
-/// every element itself (no zero pass over memory it is about to fill).
-template <typename T>
-NumpyArray<T> numpy_uninitialized(std::vector<std::size_t> shape) {
-  std::size_t n = 1;
-  for (const std::size_t d : shape) n *= d;
-  T* owned = new T[n > 0 ? n : 1];
-  nb::capsule owner(owned, [](void* p) noexcept { delete[] static_cast<T*>(p); });
-  return NumpyArray<T>(owned, shape.size(), shape.data(), owner);
-}
-
 /// evade.InputError (a ValueError): what the CLI reports as "evade: error:" (config::ConfigError)
 /// or "evade: invalid input:" (std::invalid_argument), with the same message.
 void register_errors(nb::module_& m);

@@ -1,10 +1,13 @@
 // Bindings of the SGP4 catalog calls: read a catalog (TLE/3LE, OMM KVN/XML, GP JSON/CSV;
-// sgp4/catalog.hpp) and propagate N objects x T instants into numpy arrays
+// sgp4/catalog.hpp) and propagate N objects x T instants into numpy arrays the caller made
 // (sgp4/propagate_grid.hpp), with the GIL released while SGP4 runs.
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
@@ -47,8 +50,15 @@ std::vector<std::string> catalog_names(const Catalog& c) {
 
 using TimesIn = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 
-nb::tuple propagate(const Catalog& c, const std::string& start_utc, TimesIn t_s,
-                    const std::string& frame, int threads, bool velocities) {
+using StatesOut = nb::ndarray<double, nb::ndim<3>, nb::c_contig, nb::device::cpu>;
+using ErrorsOut = nb::ndarray<std::int32_t, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+// Into the caller's arrays (numpy's own allocations: numpy advises huge pages for large ones,
+// so the kernel's first touch of the states costs little; a fresh 40 MB array of 4 KiB pages
+// costs about as much as SGP4 over it). r (N, T, 3), v the same or None, err (N, T).
+double propagate_into(const Catalog& c, const std::string& start_utc, TimesIn t_s,
+                      const std::string& frame, int threads, StatesOut r, std::optional<StatesOut> v,
+                      ErrorsOut err) {
   sgp4::StateGridRequest req;
   req.start_j2000_s = sgp4::start_j2000_s_from_utc(start_utc, c);
   req.t_s = t_s.data();
@@ -57,21 +67,16 @@ nb::tuple propagate(const Catalog& c, const std::string& start_utc, TimesIn t_s,
   req.threads = threads;
   sgp4::check_state_grid_request(c, req);
   const std::size_t n = c.objects.size();
-  // propagate_grid writes every element: the arrays are the caller's, not copied after.
-  NumpyArray<double> r = numpy_uninitialized<double>({n, req.n_times, 3});
-  NumpyArray<std::int32_t> err = numpy_uninitialized<std::int32_t>({n, req.n_times});
-  nb::object v = nb::none();
-  double* v_data = nullptr;
-  if (velocities) {
-    NumpyArray<double> va = numpy_uninitialized<double>({n, req.n_times, 3});
-    v_data = va.data();
-    v = nb::cast(va, nb::rv_policy::reference);
-  }
+  const auto fits = [&](std::size_t rows, std::size_t cols) { return rows == n && cols == req.n_times; };
+  if (!fits(r.shape(0), r.shape(1)) || r.shape(2) != 3 || !fits(err.shape(0), err.shape(1)) ||
+      (v && (!fits(v->shape(0), v->shape(1)) || v->shape(2) != 3)))
+    throw std::invalid_argument("propagate: the output arrays must be (N, T, 3) and (N, T)");
+  double* v_data = v ? v->data() : nullptr;
   {
     nb::gil_scoped_release unlocked;
     sgp4::propagate_grid(c, req, {r.data(), v_data, err.data()});
   }
-  return nb::make_tuple(req.start_j2000_s, r, v, err);
+  return req.start_j2000_s;
 }
 
 }  // namespace
@@ -91,9 +96,10 @@ void bind_sgp4(nb::module_& m) {
   m.def("read_catalog_file", [](const std::string& path) {
         return ccsds::read_catalog(read_text_file(path, "catalog"), path);
       }, nb::arg("path"));
-  m.def("sgp4_propagate", &propagate, nb::arg("catalog"), nb::arg("start_utc"), nb::arg("t_s"),
-        nb::arg("frame"), nb::arg("threads"), nb::arg("velocities"),
-        "(start_j2000_s, r_m[N,T,3], v_mps[N,T,3] or None, error[N,T]) of every object at every instant.");
+  m.def("sgp4_propagate_into", &propagate_into, nb::arg("catalog"), nb::arg("start_utc"),
+        nb::arg("t_s"), nb::arg("frame"), nb::arg("threads"), nb::arg("r_m"), nb::arg("v_mps").none(),
+        nb::arg("error"),
+        "start_j2000_s; fills r_m[N,T,3], v_mps[N,T,3] (or None) and error[N,T] of every object at every instant.");
   m.def("sgp4_error_text", [](int code) -> std::string {
         if (code < 0 || code > static_cast<int>(sgp4::Sgp4Error::kDecayed)) return "unknown code";
         return sgp4::sgp4_error_text(static_cast<sgp4::Sgp4Error>(code));
