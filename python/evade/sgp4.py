@@ -1,7 +1,8 @@
 """SGP4 catalogs: read element sets and propagate many objects at many instants.
 
 SGP4 is Vallado, Crawford, Hujsak and Kelso, "Revisiting Spacetrack Report #3" (2006),
-improved mode, WGS-72, the same code as ``evade propagate --tle/--omm``. States are in TEME
+improved mode, WGS-72, the theory of ``evade propagate --tle/--omm`` (here four element sets
+at a time where the processor has AVX2 and FMA, within 1e-12 |r| of it). States are in TEME
 (``frame='teme'``) or J2000 (``frame='eci'``), SI units: metres and metres per second.
 """
 from __future__ import annotations
