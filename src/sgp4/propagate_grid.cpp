@@ -5,9 +5,9 @@
 // (propagate_x4, the path the screener uses), near-Earth and deep-space groups apart, the
 // others one at a time; instants go in chunks of kChunkInstants (a block's lanes stay in
 // cache over a chunk). The TEME -> J2000 matrices are computed once per request, one per
-// instant (72 bytes each: at most 1.5 times what the states of one object take). A lane the four-lane path cannot take at an instant
-// (ok false: an error, a decay, a correction out of its range) is redone by propagate_s, so
-// the error codes are the scalar theory's. An error writes its code and NaN states unless
+// instant (72 bytes each: at most 1.5 times what the states of one object take). A lane the
+// four-lane path cannot take at an instant (ok false: an error, a decay, a correction out of
+// its range) is redone by propagate_s, so the error codes are the scalar theory's. An error writes its code and NaN states unless
 // the theory computed one (decay).
 #include "evade/sgp4/propagate_grid.hpp"
 
@@ -36,12 +36,14 @@ struct Chunk {
   const Eigen::Matrix3d* m = nullptr;
 };
 
-// One object of a block: its propagator, the offset of the request's start from its epoch
-// and its row in the outputs.
+// One object of a block: its propagator, the offset of the request's start from its epoch,
+// its row in the outputs and its path (0: one at a time; 1: near-Earth lanes; 2: deep-space
+// lanes).
 struct Row {
   Sgp4Propagator prop;
   double offset_s;
   std::size_t row;
+  int kind;
 };
 
 void write_state(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
@@ -79,37 +81,25 @@ void scalar_state(const StateGridRequest& req, const StateGridOut& out, const Ch
   write_state(req, out, c, o.row, k, s.r_teme_m.data(), s.v_teme_mps.data());
 }
 
-// The four-lane states of lane j at instant k into its row (TEME as computed, or rotated).
-inline void store_lane(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
-                       std::size_t row, std::size_t k, const double r[3], const double v[3]) {
-  const std::size_t i = row * req.n_times + k;
-  out.error[i] = 0;
-  if (req.j2000) {
-    write_state(req, out, c, row, k, r, v);
-    return;
-  }
-  double* ro = out.r_m + 3 * i;
-  ro[0] = r[0], ro[1] = r[1], ro[2] = r[2];
-  if (out.v_mps == nullptr) return;
-  double* vo = out.v_mps + 3 * i;
-  vo[0] = v[0], vo[1] = v[1], vo[2] = v[2];
-}
-
 // Four rows of one kind (the last repeated where fewer than four remain) over a chunk.
 void lane_states(const StateGridRequest& req, const StateGridOut& out, const Chunk& c,
                  const Row* const rows[4], std::size_t n) {
   const Sgp4Propagator* p[4];
-  double offset_min[4];
-  for (std::size_t j = 0; j < 4; ++j) p[j] = &rows[j]->prop, offset_min[j] = rows[j]->offset_s;
+  double offset_s[4];
+  for (std::size_t j = 0; j < 4; ++j) p[j] = &rows[j]->prop, offset_s[j] = rows[j]->offset_s;
   const Sgp4X4Lanes lanes(p);
   for (std::size_t k = c.k0; k < c.k1; ++k) {
     double tsince_min[4], r[4][3], v[4][3];
     bool ok[4];
-    for (std::size_t j = 0; j < 4; ++j) tsince_min[j] = (offset_min[j] + req.t_s[k]) / 60.0;  // as propagate_s
+    for (std::size_t j = 0; j < 4; ++j) tsince_min[j] = (offset_s[j] + req.t_s[k]) / 60.0;  // as propagate_s
     propagate_x4(lanes, p, tsince_min, r, v, ok);
     for (std::size_t j = 0; j < n; ++j) {
-      if (ok[j]) store_lane(req, out, c, rows[j]->row, k, r[j], v[j]);
-      else scalar_state(req, out, c, *rows[j], k);
+      if (!ok[j]) {
+        scalar_state(req, out, c, *rows[j], k);
+        continue;
+      }
+      out.error[rows[j]->row * req.n_times + k] = 0;
+      write_state(req, out, c, rows[j]->row, k, r[j], v[j]);
     }
   }
 }
@@ -127,7 +117,7 @@ void block_chunk(const StateGridRequest& req, const StateGridOut& out, const Chu
     const Row* group[4];
     std::size_t n = 0;
     for (const Row& o : rows) {
-      if (lane_kind(o.prop) != kind) continue;
+      if (o.kind != kind) continue;
       group[n++] = &o;
       if (n < 4) continue;
       lane_states(req, out, c, group, 4);
@@ -138,21 +128,21 @@ void block_chunk(const StateGridRequest& req, const StateGridOut& out, const Chu
     lane_states(req, out, c, group, n);
   }
   for (const Row& o : rows)
-    if (lane_kind(o.prop) == 0)
+    if (o.kind == 0)
       for (std::size_t k = c.k0; k < c.k1; ++k) scalar_state(req, out, c, o, k);
 }
 
 void propagate_block(const Catalog& catalog, const StateGridRequest& req, const StateGridOut& out,
-                     std::size_t first, std::size_t last, const Eigen::Matrix3d* m) {
+                     std::size_t first, std::size_t last, const Eigen::Matrix3d* j2000_m) {
   std::vector<Row> rows;
   rows.reserve(last - first);
   for (std::size_t i = first; i < last; ++i) {
     const MeanElements& m = catalog.objects[i];
-    rows.push_back({Sgp4Propagator(m, OperationMode::kImproved),
-                    req.start_j2000_s - epoch_seconds_since_j2000(m), i});
+    const Sgp4Propagator prop(m, OperationMode::kImproved);
+    rows.push_back({prop, req.start_j2000_s - epoch_seconds_since_j2000(m), i, lane_kind(prop)});
   }
   for (std::size_t k0 = 0; k0 < req.n_times; k0 += kChunkInstants)
-    block_chunk(req, out, Chunk{k0, std::min(req.n_times, k0 + kChunkInstants), m}, rows);
+    block_chunk(req, out, Chunk{k0, std::min(req.n_times, k0 + kChunkInstants), j2000_m}, rows);
 }
 
 // work(j) on threads j = 1 .. threads - 1 and on this one (j = 0).
